@@ -1,0 +1,167 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam.
+
+    triboFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <http://www.gnu.org/licenses/>.
+
+Application
+    largeStrainSolidFoam
+
+Group
+    grpStressAnalysisSolvers
+
+Description
+    Large-strain solid mechanics in the total Lagrangian description: a
+    cell-centred finite-volume discretisation of the momentum balance,
+    elastic or elastoplastic at finite strain, quasi-static or with
+    inertia, solved at every time step by a Jacobian-free Newton-Krylov
+    method preconditioned with the compact elastic operator
+    (doc/theory.md). Steps that do not converge are cut back and retried;
+    the run stops with a message after maxCutBacks consecutive failures,
+    keeping the last converged time directory.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "pointFields.H"
+#include "totalLagrangianSolid.H"
+#include "newtonKrylov.H"
+#include "OFstream.H"
+#include "clockTime.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Large-strain finite-volume solid solver (total Lagrangian,"
+        " Newton-Krylov) for metal forming with frictional contact"
+    );
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createFields.H"
+    #include "readSolidControls.H"
+
+    const scalar userDeltaT = runTime.deltaTValue();
+    scalar deltaT = userDeltaT;
+    label nCutBacks = 0;
+    label nSteps = 0;
+    label nNewtonTotal = 0;
+
+    autoPtr<OFstream> perfFile;
+    if (Pstream::master())
+    {
+        mkDir(runTime.globalPath()/"postProcessing");
+        perfFile.reset
+        (
+            new OFstream
+            (
+                runTime.globalPath()/"postProcessing"/"solverPerformance.dat",
+                IOstream::ASCII, IOstream::currentVersion,
+                IOstream::UNCOMPRESSED, true
+            )
+        );
+        perfFile()
+            << "# time deltaT newtonIterations krylovIterations"
+            << " residualEvaluations forceResidual cutBacks wallTime" << nl;
+    }
+
+    Eigen::VectorXd x, xStart;
+    clockTime stepClock;
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.value() < runTime.endTime().value() - 1e-9*userDeltaT)
+    {
+        const scalar t0 = runTime.value();
+        const label index0 = runTime.timeIndex();
+
+        runTime.setDeltaT
+        (
+            min(deltaT, runTime.endTime().value() - t0)
+        );
+        ++runTime;
+
+        Info<< "Time = " << runTime.timeName() << ", deltaT = "
+            << runTime.deltaTValue() << endl;
+
+        stepClock.timeIncrement();
+        solid.beginStep(x, xStart, predictor);
+        const newtonKrylov::result res =
+            nonlinearSolver.solve(solid, x, xStart);
+
+        if (!res.converged)
+        {
+            Info<< "    step not converged (" << res.reason << ") after "
+                << res.newtonIterations << " Newton iterations, force residual "
+                << res.forceResidual << endl;
+
+            if (++nCutBacks > maxCutBacks)
+            {
+                FatalErrorInFunction
+                    << "The step to time " << runTime.value()
+                    << " did not converge after " << maxCutBacks
+                    << " cut-backs of the time step (last deltaT "
+                    << runTime.deltaTValue() << " s, reason: " << res.reason
+                    << ")." << nl
+                    << "The last converged time directory is "
+                    << t0 << "; check the loading, the boundary conditions"
+                    << " and the solid controls in system/fvSolution" << nl
+                    << exit(FatalError);
+            }
+
+            runTime.setTime(t0, index0);
+            deltaT = cutBackFactor*runTime.deltaTValue();
+            Info<< "    cutting the time step back to " << deltaT
+                << " s and retrying (" << nCutBacks << " of " << maxCutBacks
+                << ")" << nl << endl;
+            continue;
+        }
+
+        solid.commit(x);
+        solid.reportForces();
+
+        ++nSteps;
+        nNewtonTotal += res.newtonIterations;
+
+        const scalar stepTime = stepClock.timeIncrement();
+        Info<< "    converged: " << res.newtonIterations
+            << " Newton iterations, " << res.krylovIterations
+            << " Krylov iterations, " << res.residualEvaluations
+            << " residual evaluations, force residual " << res.forceResidual
+            << ", " << stepTime << " s" << endl;
+
+        if (perfFile.valid())
+        {
+            perfFile()
+                << runTime.value() << ' ' << runTime.deltaTValue() << ' '
+                << res.newtonIterations << ' ' << res.krylovIterations << ' '
+                << res.residualEvaluations << ' ' << res.forceResidual << ' '
+                << nCutBacks << ' ' << runTime.elapsedCpuTime() << endl;
+        }
+
+        nCutBacks = 0;
+        deltaT = min(timeStepGrowth*deltaT, userDeltaT);
+
+        runTime.write();
+
+        Info<< "    ExecutionTime = " << runTime.elapsedCpuTime() << " s"
+            << "  ClockTime = " << runTime.elapsedClockTime() << " s"
+            << nl << endl;
+    }
+
+    Info<< "Steps: " << nSteps << ", Newton iterations: " << nNewtonTotal
+        << " (" << scalar(nNewtonTotal)/max(nSteps, 1) << " per step)" << nl
+        << "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

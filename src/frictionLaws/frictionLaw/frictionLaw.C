@@ -1,0 +1,112 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam.
+
+    triboFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <https://www.gnu.org/licenses/>.
+
+    SPDX-License-Identifier: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
+
+#include "frictionLaw.H"
+#include "frictionParameters.H"
+#include "error.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(frictionLaw, 0);
+    defineRunTimeSelectionTable(frictionLaw, dictionary);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::frictionLaw::frictionLaw(const dictionary& dict)
+:
+    KN_(frictionParameters::positive(dict, "KN")),
+    KT_(frictionParameters::positive(dict, "KT"))
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::frictionLaw::setPenalties(const scalar KN, const scalar KT)
+{
+    if (!(KN > 0) || !(KT > 0))
+    {
+        FatalErrorInFunction
+            << "penalties must be > 0, got KN = " << KN << ", KT = " << KT
+            << exit(FatalError);
+    }
+    KN_ = KN;
+    KT_ = KT;
+}
+
+
+Foam::frictionState Foam::frictionLaw::initialState() const
+{
+    return frictionState();
+}
+
+
+void Foam::frictionLaw::openContact
+(
+    const frictionState& old,
+    const frictionInput& in,
+    frictionResult& out
+) const
+{
+    out.tT = Zero;
+    out.dtTdgT = Zero;
+    out.dtTdgN = Zero;
+    out.state = initialState();
+    out.state.totalSlip = in.gT;
+    out.state.plasticSlip = in.gT;
+    out.state.normalSlip = old.normalSlip;
+    out.state.cumulatedSlip = old.cumulatedSlip;
+    out.state.status = frictionState::OPEN;
+}
+
+
+void Foam::frictionLaw::setFromReturn
+(
+    const frictionState& old,
+    const frictionInput& in,
+    const radialReturn::output& rr,
+    frictionResult& out
+)
+{
+    out.tT = rr.F;
+    out.dtTdgT = rr.dFdgT;
+    out.dtTdgN = rr.dFdgN;
+    out.state.totalSlip = in.gT;
+    out.state.plasticSlip = old.plasticSlip + rr.dg*rr.m;
+    out.state.cumulatedSlip = old.cumulatedSlip + rr.dg;
+    out.state.status = rr.slip ? frictionState::SLIP : frictionState::STICK;
+}
+
+
+long Foam::frictionLaw::nIterationLimitHits()
+{
+    return safeguardedNewton::nLimitHits();
+}
+
+
+long Foam::frictionLaw::reportIterationLimitHits()
+{
+    const long n = safeguardedNewton::nLimitHits();
+    if (n > 0)
+    {
+        WarningInFunction
+            << n << " of " << safeguardedNewton::nSolves()
+            << " return-mapping solves hit the iteration limit"
+            << " (result kept at the last bracketed iterate)" << endl;
+    }
+    return n;
+}
+
+// ************************************************************************* //

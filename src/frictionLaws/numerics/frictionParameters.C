@@ -1,0 +1,116 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam.
+
+    triboFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <https://www.gnu.org/licenses/>.
+
+    SPDX-License-Identifier: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
+
+#include "frictionParameters.H"
+#include "error.H"
+
+void Foam::frictionParameters::check
+(
+    const dictionary& dict,
+    const word& key,
+    const scalar value,
+    const scalar lo, const bound loKind,
+    const scalar hi, const bound hiKind
+)
+{
+    const bool badLo =
+        (loKind == closed && !(value >= lo))
+     || (loKind == open && !(value > lo));
+    const bool badHi =
+        (hiKind == closed && !(value <= hi))
+     || (hiKind == open && !(value < hi));
+
+    if (badLo || badHi)
+    {
+        FatalIOErrorInFunction(dict)
+            << "keyword '" << key << "' must be";
+        if (loKind != none)
+        {
+            FatalIOError<< (loKind == closed ? " >= " : " > ") << lo;
+        }
+        if (loKind != none && hiKind != none)
+        {
+            FatalIOError<< " and";
+        }
+        if (hiKind != none)
+        {
+            FatalIOError<< (hiKind == closed ? " <= " : " < ") << hi;
+        }
+        FatalIOError
+            << ", got " << value << " (dictionary " << dict.name() << ")"
+            << exit(FatalIOError);
+    }
+}
+
+
+Foam::scalar Foam::frictionParameters::positive
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const scalar v = dict.get<scalar>(key);
+    check(dict, key, v, 0, open);
+    return v;
+}
+
+
+Foam::scalar Foam::frictionParameters::nonNegative
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const scalar v = dict.get<scalar>(key);
+    check(dict, key, v, 0, closed);
+    return v;
+}
+
+
+Foam::scalar Foam::frictionParameters::nonNegative
+(
+    const dictionary& dict,
+    const word& key,
+    scalar deflt
+)
+{
+    const scalar v = dict.getOrDefault<scalar>(key, deflt);
+    check(dict, key, v, 0, closed);
+    return v;
+}
+
+
+Foam::scalar Foam::frictionParameters::positive
+(
+    const dictionary& dict,
+    const word& key,
+    scalar deflt
+)
+{
+    const scalar v = dict.getOrDefault<scalar>(key, deflt);
+    check(dict, key, v, 0, open);
+    return v;
+}
+
+
+Foam::scalar Foam::frictionParameters::unitInterval
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const scalar v = dict.get<scalar>(key);
+    check(dict, key, v, 0, closed, 1, closed);
+    return v;
+}
+
+// ************************************************************************* //

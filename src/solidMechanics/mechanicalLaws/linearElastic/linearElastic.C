@@ -1,0 +1,39 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "linearElastic.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace mechanicalLaws
+{
+    defineTypeNameAndDebug(linearElastic, 0);
+    addToRunTimeSelectionTable(mechanicalLaw, linearElastic, dictionary);
+}
+}
+
+
+Foam::mechanicalLaws::linearElastic::linearElastic(const dictionary& dict)
+:
+    mechanicalLaw(dict)
+{}
+
+
+Foam::tensor Foam::mechanicalLaws::linearElastic::stress
+(
+    const tensor& F,
+    const materialState& old,
+    materialState& updated
+) const
+{
+    // [S3]: small strain from the displacement gradient F - I
+    const symmTensor eps(symm(F - tensor::I));
+    updated = old;
+    return tensor(lambda()*tr(eps)*symmTensor::I + 2*mu()*eps);
+}
+
+
+// ************************************************************************* //

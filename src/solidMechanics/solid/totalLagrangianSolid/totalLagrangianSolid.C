@@ -1,0 +1,515 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "totalLagrangianSolid.H"
+#include "emptyFvPatch.H"
+#include "symmetryPlaneFvPatch.H"
+#include "symmetryFvPatch.H"
+#include "wedgeFvPatch.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(totalLagrangianSolid, 0);
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+//- Solved components of a (possibly 2-D) mesh
+static labelList solvedComponents(const fvMesh& mesh)
+{
+    labelList comps;
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (mesh.solutionD()[d] == 1)
+        {
+            comps.append(d);
+        }
+    }
+    return comps;
+}
+
+
+//- History field read from the start time if written, else its initial
+//  value; written only when the law is plastic
+template<class Type>
+static tmp<GeometricField<Type, fvsPatchField, surfaceMesh>> historyField
+(
+    const fvMesh& mesh,
+    const word& name,
+    const Type& initial,
+    const bool write
+)
+{
+    IOobject io
+    (
+        name,
+        mesh.time().timeName(),
+        mesh,
+        IOobject::READ_IF_PRESENT,
+        write ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+    );
+
+    if (io.typeHeaderOk<GeometricField<Type, fvsPatchField, surfaceMesh>>())
+    {
+        return tmp<GeometricField<Type, fvsPatchField, surfaceMesh>>::New
+        (
+            io, mesh
+        );
+    }
+
+    io.readOpt() = IOobject::NO_READ;
+    return tmp<GeometricField<Type, fvsPatchField, surfaceMesh>>::New
+    (
+        io,
+        mesh,
+        dimensioned<Type>(name, dimless, initial)
+    );
+}
+
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::totalLagrangianSolid::classifyPatches()
+{
+    const fvBoundaryMesh& patches = mesh_.boundary();
+    patchKinds_.setSize(patches.size());
+    forcePatches_.setSize(patches.size(), nullptr);
+
+    forAll(patches, patchi)
+    {
+        const fvPatch& p = patches[patchi];
+        fvPatchVectorField& pf = D_.boundaryFieldRef()[patchi];
+
+        if (isA<emptyFvPatch>(p))
+        {
+            patchKinds_[patchi] = EMPTY;
+        }
+        else if (p.coupled())
+        {
+            patchKinds_[patchi] = COUPLED;
+        }
+        else if (isA<symmetryPlaneFvPatch>(p) || isA<symmetryFvPatch>(p))
+        {
+            patchKinds_[patchi] = SYMMETRY;
+        }
+        else if (dynamic_cast<solidForceBoundary*>(&pf))
+        {
+            patchKinds_[patchi] = FORCE;
+            forcePatches_[patchi] = dynamic_cast<solidForceBoundary*>(&pf);
+        }
+        else if (pf.fixesValue())
+        {
+            patchKinds_[patchi] = FIXED;
+        }
+        else
+        {
+            FatalErrorInFunction
+                << "Patch " << p.name() << " of field D (file "
+                << D_.objectPath() << ") has boundary condition type '"
+                << pf.type() << "', which largeStrainSolidFoam does not"
+                << " support." << nl
+                << "Expected a fixed-value type (fixedValue,"
+                << " uniformFixedValue, ...), solidTraction,"
+                << " frictionalContact, or a symmetryPlane/symmetry, empty"
+                << " or processor patch" << nl
+                << exit(FatalError);
+        }
+    }
+}
+
+
+void Foam::totalLagrangianSolid::computeGradientWeights()
+{
+    // [S10] weighted least squares with weights 1/|d|^2 on the reference mesh
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const volVectorField& C = mesh_.C();
+
+    symmTensorField dd(mesh_.nCells(), Zero);
+
+    forAll(own, facei)
+    {
+        const vector d(C[nei[facei]] - C[own[facei]]);
+        const symmTensor wdd(sqr(d)/magSqr(d));
+        dd[own[facei]] += wdd;
+        dd[nei[facei]] += wdd;
+    }
+
+    List<vectorField> patchDelta(mesh_.boundary().size());
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& p = mesh_.boundary()[patchi];
+        const labelUList& fc = p.faceCells();
+        vectorField& delta = patchDelta[patchi];
+
+        switch (patchKinds_[patchi])
+        {
+            case FIXED:
+                delta = p.Cf() - p.Cn();
+                break;
+            case COUPLED:
+                delta = p.delta();
+                break;
+            case SYMMETRY:
+            {
+                // the mirror image of the cell across the plane
+                const vectorField n(p.nf());
+                delta = 2*((n & (p.Cf() - p.Cn()))*n);
+                break;
+            }
+            default:
+                continue;
+        }
+
+        forAll(fc, i)
+        {
+            dd[fc[i]] += sqr(delta[i])/magSqr(delta[i]);
+        }
+    }
+
+    // Empty directions of a 2-D mesh: unit diagonal keeps dd invertible
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (mesh_.solutionD()[d] != 1)
+        {
+            vector e(Zero);
+            e[d] = 1;
+            dd += sqr(e);
+        }
+    }
+
+    forAll(dd, celli)
+    {
+        const scalar scale = tr(dd[celli])/3;
+        if (det(dd[celli]) < 1e-10*pow3(scale))
+        {
+            FatalErrorInFunction
+                << "Cell " << celli << " at " << C[celli]
+                << " has too few neighbours for a least-squares gradient"
+                << " (its other faces carry tractions)." << nl
+                << "Refine the mesh so there are at least two cells across"
+                << " every traction-loaded wall" << nl << exit(FatalError);
+        }
+    }
+
+    const symmTensorField invDd(inv(dd));
+
+    ownLs_.setSize(own.size());
+    neiLs_.setSize(own.size());
+    forAll(own, facei)
+    {
+        const vector d(C[nei[facei]] - C[own[facei]]);
+        const vector wd(d/magSqr(d));
+        ownLs_[facei] = invDd[own[facei]] & wd;
+        neiLs_[facei] = invDd[nei[facei]] & wd;
+    }
+
+    patchLs_.setSize(mesh_.boundary().size());
+    forAll(mesh_.boundary(), patchi)
+    {
+        const labelUList& fc = mesh_.boundary()[patchi].faceCells();
+        const vectorField& delta = patchDelta[patchi];
+        vectorField& ls = patchLs_[patchi];
+        ls.setSize(delta.size());
+        forAll(delta, i)
+        {
+            ls[i] = invDd[fc[i]] & (delta[i]/magSqr(delta[i]));
+        }
+    }
+}
+
+
+void Foam::totalLagrangianSolid::assemblePreconditioner
+(
+    const bool withPatchStiffness
+)
+{
+    // [S16] compact-stencil elastic operator: a face passes the traction
+    // c (mu I + (lambda + mu) n n) (D_N - D_P), c = |S|/|d|
+    const scalar mu = law_->mu();
+    const scalar lambda = law_->lambda();
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const vectorField& Sf = mesh_.Sf();
+    const volVectorField& C = mesh_.C();
+
+    auto faceStiffness = [&](const vector& S, const vector& d)
+    {
+        const scalar magS = mag(S);
+        const vector n(S/magS);
+        return (magS/mag(d))*(mu*tensor::I + (lambda + mu)*sqr(n));
+    };
+
+    precon_.clear();
+
+    scalar meanDiag = 0;
+
+    forAll(own, facei)
+    {
+        const tensor K
+        (
+            faceStiffness(Sf[facei], C[nei[facei]] - C[own[facei]])
+        );
+        precon_.addCoupling(own[facei], nei[facei], K);
+        meanDiag += 2*tr(K);
+    }
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& p = mesh_.boundary()[patchi];
+        const labelUList& fc = p.faceCells();
+        const vectorField& S = p.Sf();
+
+        switch (patchKinds_[patchi])
+        {
+            case FIXED:
+            case COUPLED:
+            {
+                const vectorField d
+                (
+                    patchKinds_[patchi] == FIXED ? p.Cf() - p.Cn() : p.delta()
+                );
+                forAll(fc, i)
+                {
+                    precon_.addDiagonal(fc[i], faceStiffness(S[i], d[i]));
+                }
+                break;
+            }
+            case SYMMETRY:
+            {
+                const vectorField d(p.Cf() - p.Cn());
+                forAll(fc, i)
+                {
+                    const vector n(S[i]/mag(S[i]));
+                    precon_.addDiagonal
+                    (
+                        fc[i],
+                        (mag(S[i])/mag(d[i]))*(lambda + 2*mu)*sqr(n)
+                    );
+                }
+                break;
+            }
+            case FORCE:
+            {
+                if (!withPatchStiffness)
+                {
+                    break;
+                }
+                vectorField Dface;
+                tensorField F;
+                forcePatchKinematics(patchi, Dface, F);
+                const solidPatchKinematics k
+                {
+                    mesh_.Sf().boundaryField()[patchi],
+                    mesh_.Cf().boundaryField()[patchi],
+                    Dface, forcePatchD0_[patchi], F,
+                    mesh_.time().value(), mesh_.time().deltaTValue()
+                };
+                tensorField K(fc.size(), Zero);
+                if (forcePatches_[patchi]->stiffness(k, K))
+                {
+                    forAll(fc, i)
+                    {
+                        precon_.addDiagonal(fc[i], K[i]);
+                    }
+                }
+                break;
+            }
+            default:
+                break;
+        }
+    }
+
+    const scalarField& V = mesh_.V();
+    const scalar nCells = max(mesh_.nCells(), 1);
+    meanDiag /= (nCells*vector::nComponents);
+
+    const scalar dt = mesh_.time().deltaTValue();
+    const scalar inertiaCoeff =
+        inertia_ ? 2*law_->rho()/(dt*(dt + deltaT0_)) : 0;
+
+    // A tiny diagonal shift keeps M definite when rigid-body modes are
+    // held only by the nonlinear boundary terms
+    forAll(V, celli)
+    {
+        precon_.addDiagonal
+        (
+            celli,
+            (inertiaCoeff*V[celli] + 1e-9*meanDiag)*tensor::I
+        );
+    }
+
+    if (!precon_.factorise())
+    {
+        FatalErrorInFunction
+            << "Factorisation of the preconditioner failed" << nl
+            << exit(FatalError);
+    }
+    preconDeltaT_ = dt;
+}
+
+
+void Foam::totalLagrangianSolid::unpack
+(
+    const Eigen::VectorXd& x,
+    vectorField& v
+) const
+{
+    const label nc = comps_.size();
+    forAll(v, celli)
+    {
+        vector& vi = v[celli];
+        vi = Zero;
+        for (label a = 0; a < nc; ++a)
+        {
+            vi[comps_[a]] = x(celli*nc + a);
+        }
+    }
+}
+
+
+void Foam::totalLagrangianSolid::pack
+(
+    const vectorField& v,
+    Eigen::VectorXd& x
+) const
+{
+    const label nc = comps_.size();
+    x.resize(v.size()*nc);
+    forAll(v, celli)
+    {
+        for (label a = 0; a < nc; ++a)
+        {
+            x(celli*nc + a) = v[celli][comps_[a]];
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
+:
+    mesh_(mesh),
+    mechanicalProperties_
+    (
+        IOobject
+        (
+            "mechanicalProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    law_(mechanicalLaw::New(mechanicalProperties_.subDict("mechanicalLaw"))),
+    D_
+    (
+        IOobject
+        (
+            "D",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh
+    ),
+    Dwork_
+    (
+        IOobject("Dwork", mesh.time().timeName(), mesh),
+        D_,
+        calculatedFvPatchVectorField::typeName
+    ),
+    gradD_
+    (
+        IOobject("gradDwork", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedTensor(dimless, Zero)
+    ),
+    CpInv_(historyField(mesh, "CpInv", symmTensor::I, law_->plastic())),
+    epsilonPf_(historyField(mesh, "epsilonPf", scalar(0), law_->plastic())),
+    comps_(solvedComponents(mesh)),
+    inertia_(false),
+    D0_(D_.primitiveField()),
+    D00_(D_.primitiveField()),
+    deltaT0_(mesh.time().deltaTValue()),
+    precon_(mesh.nCells(), comps_),
+    preconDeltaT_(-1),
+    forceScale_(0),
+    bodySize_(mag(mesh.bounds().span()))
+{
+    const word d2dt2
+    (
+        mesh.schemesDict().subDict("d2dt2Schemes").get<word>("default")
+    );
+    if (d2dt2 == "Euler")
+    {
+        inertia_ = true;
+    }
+    else if (d2dt2 != "steadyState")
+    {
+        FatalIOErrorInFunction(mesh.schemesDict())
+            << "Keyword 'default' in d2dt2Schemes of "
+            << mesh.schemesDict().name() << " is '" << d2dt2
+            << "'; expected steadyState (quasi-static) or Euler (inertia)"
+            << nl << exit(FatalIOError);
+    }
+    if (inertia_ && law_->rho() <= 0)
+    {
+        FatalIOErrorInFunction(mechanicalProperties_)
+            << "Keyword 'rho' in " << mechanicalProperties_.name()
+            << " must be > 0 when d2dt2Schemes is Euler" << nl
+            << exit(FatalIOError);
+    }
+
+    // A restart with inertia reads the velocity to recover D at t - dt
+    if (inertia_)
+    {
+        IOobject velIo
+        (
+            "V", mesh.time().timeName(), mesh, IOobject::READ_IF_PRESENT
+        );
+        if (velIo.typeHeaderOk<volVectorField>())
+        {
+            const volVectorField vel(velIo, mesh);
+            D00_ = D0_ - vel.primitiveField()*deltaT0_;
+        }
+    }
+
+    classifyPatches();
+    computeGradientWeights();
+
+    // Plastic history at the faces of every patch the stress is evaluated on
+    trialInternal_.setSize(mesh.nInternalFaces());
+    trialPatch_.setSize(mesh.boundary().size());
+    forcePatchD0_.setSize(mesh.boundary().size());
+    forAll(mesh.boundary(), patchi)
+    {
+        trialPatch_[patchi].setSize(mesh.boundary()[patchi].size());
+        if (patchKinds_[patchi] == FORCE)
+        {
+            forcePatchD0_[patchi] =
+                D_.boundaryField()[patchi].patchInternalField();
+        }
+    }
+
+    Info<< "Total Lagrangian solid: " << comps_.size() << "-D, "
+        << returnReduce(mesh.nCells(), sumOp<label>()) << " cells, law "
+        << law_->type() << ", E " << law_->E() << " Pa, nu " << law_->nu()
+        << (inertia_ ? ", with inertia" : ", quasi-static") << nl << endl;
+}
+
+
+// ************************************************************************* //
