@@ -21,6 +21,7 @@ bool Foam::operator==(const frictionState& a, const frictionState& b)
     return
         a.totalSlip == b.totalSlip
      && a.plasticSlip == b.plasticSlip
+     && a.tearSlip == b.tearSlip
      && a.normalSlip == b.normalSlip
      && a.cumulatedSlip == b.cumulatedSlip
      && a.contactAge == b.contactAge
@@ -41,6 +42,7 @@ Foam::Ostream& Foam::operator<<(Ostream& os, const frictionState& s)
     os  << token::BEGIN_LIST
         << s.totalSlip << token::SPACE
         << s.plasticSlip << token::SPACE
+        << s.tearSlip << token::SPACE
         << s.normalSlip << token::SPACE
         << s.cumulatedSlip << token::SPACE
         << s.contactAge << token::SPACE
@@ -57,7 +59,8 @@ Foam::Ostream& Foam::operator<<(Ostream& os, const frictionState& s)
 Foam::Istream& Foam::operator>>(Istream& is, frictionState& s)
 {
     is.readBegin("frictionState");
-    is  >> s.totalSlip >> s.plasticSlip >> s.normalSlip >> s.cumulatedSlip
+    is  >> s.totalSlip >> s.plasticSlip >> s.tearSlip >> s.normalSlip
+        >> s.cumulatedSlip
         >> s.contactAge >> s.lubricationWeight >> s.slipRate >> s.status;
     is.readEnd("frictionState");
 

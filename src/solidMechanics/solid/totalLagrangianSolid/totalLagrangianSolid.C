@@ -438,6 +438,9 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
         mesh,
         dimensionedTensor(dimless, Zero)
     ),
+    Jcell_(mesh.nCells(), 1),
+    volumetricAveraging_(true),
+    emptyProjector_(Zero),
     CpInv_(historyField(mesh, "CpInv", symmTensor::I, law_->plastic())),
     epsilonPf_(historyField(mesh, "epsilonPf", scalar(0), law_->plastic())),
     comps_(solvedComponents(mesh)),
@@ -472,6 +475,16 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
             << "Keyword 'rho' in " << mechanicalProperties_.name()
             << " must be > 0 when d2dt2Schemes is Euler" << nl
             << exit(FatalIOError);
+    }
+
+    volumetricAveraging_ =
+        mechanicalProperties_.lookupOrDefault<bool>("volumetricAveraging", true);
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (mesh.solutionD()[d] != 1)
+        {
+            emptyProjector_.component(4*d) = 1;
+        }
     }
 
     // A restart with inertia reads the velocity to recover D at t - dt

@@ -36,9 +36,14 @@ void Foam::totalLagrangianSolid::updateOutputFields()
     {
         const label P = own[facei];
         const label N = nei[facei];
+        const scalar w = weights[facei];
         const tensor F
         (
-            faceDefGrad(G[P], G[N], weights[facei], C[N] - C[P], u[N] - u[P])
+            volumeAveraged
+            (
+                faceDefGrad(G[P], G[N], w, C[N] - C[P], u[N] - u[P]),
+                w*Jcell_[P] + (1 - w)*Jcell_[N]
+            )
         );
         materialState s;
         materialState old;
@@ -243,7 +248,11 @@ void Foam::totalLagrangianSolid::reportForces() const
             const label P = fc[i];
             const tensor F
             (
-                faceDefGrad(G[P], G[P], 1, delta[i], Db[i] - u[P])
+                volumeAveraged
+                (
+                    faceDefGrad(G[P], G[P], 1, delta[i], Db[i] - u[P]),
+                    Jcell_[P]
+                )
             );
             materialState old, s;
             old.CpInv = CpB[i];

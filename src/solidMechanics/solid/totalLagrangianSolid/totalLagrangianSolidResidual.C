@@ -72,6 +72,11 @@ void Foam::totalLagrangianSolid::updateGradient()
     }
 
     gradD_.correctBoundaryConditions();
+
+    forAll(G, celli)
+    {
+        Jcell_[celli] = det(tensor::I + G[celli].T());
+    }
 }
 
 
@@ -118,11 +123,13 @@ void Foam::totalLagrangianSolid::residual(vectorField& R)
     {
         const label P = own[facei];
         const label N = nei[facei];
+        const scalar w = weights[facei];
         const tensor F
         (
-            faceDefGrad
+            volumeAveraged
             (
-                G[P], G[N], weights[facei], C[N] - C[P], u[N] - u[P]
+                faceDefGrad(G[P], G[N], w, C[N] - C[P], u[N] - u[P]),
+                w*Jcell_[P] + (1 - w)*Jcell_[N]
             )
         );
         materialState old;
@@ -221,7 +228,14 @@ void Foam::totalLagrangianSolid::residual(vectorField& R)
         forAll(fc, i)
         {
             const label P = fc[i];
-            const tensor F(faceDefGrad(G[P], GN[i], w[i], delta[i], dD[i]));
+            const tensor F
+            (
+                volumeAveraged
+                (
+                    faceDefGrad(G[P], GN[i], w[i], delta[i], dD[i]),
+                    w[i]*Jcell_[P] + (1 - w[i])*det(tensor::I + GN[i].T())
+                )
+            );
             materialState old;
             old.CpInv = CpInvB[i];
             old.epsilonP = epsPB[i];
