@@ -1,0 +1,58 @@
+#!/usr/bin/env python3
+# Neo-Hookean bar in uniaxial tension: applied nominal stress against the
+# exact homogeneous solution at the computed stretch (doc/theory.md [V3]).
+# Writes results.dat.
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.environ["TRIBOFOAM_DIR"], "bin", "python"))
+import foamio
+
+E, nu, L, W = 10e6, 0.3, 0.1, 0.01
+mu = E/(2*(1 + nu))
+lam = E*nu/((1 + nu)*(1 - 2*nu))
+
+
+def lateralStretch(l):
+    """Lateral stretch with zero lateral stress: mu(l2 - 1/l2) + lam ln(J)/l2 = 0"""
+    lo, hi = 1e-3, 1.0
+    for _ in range(200):
+        m = 0.5*(lo + hi)
+        if mu*(m - 1/m) + lam*math.log(l*m*m)/m > 0:
+            hi = m
+        else:
+            lo = m
+    return 0.5*(lo + hi)
+
+
+def nominalStress(l):
+    l2 = lateralStretch(l)
+    return mu*(l - 1/l) + lam*math.log(l*l2*l2)/l
+
+
+case = sys.argv[1] if len(sys.argv) > 1 else "."
+pApplied = float(sys.argv[2])
+t = foamio.latestTime(case)
+ux = [d[0] for d in foamio.readPatchField(os.path.join(case, t, "D"), "xMax")]
+Ds = foamio.readPatchField(os.path.join(case, t, "D"), "sides")
+Cs = foamio.readPatchField(os.path.join(case, "0", "C"), "sides")
+stretch = 1 + sum(ux)/len(ux)/L
+# lateral stretch from the y = W side faces
+uy = [d[1] for d, c in zip(Ds, Cs) if abs(c[1] - W) < 1e-9]
+lateral = 1 + sum(uy)/len(uy)/W
+
+pExact = nominalStress(stretch)
+res = {
+    "stretch": stretch,
+    "forceRelError": abs(pApplied - pExact)/pExact,
+    "lateralStretchRelError": abs(lateral - lateralStretch(stretch))
+    / lateralStretch(stretch),
+    "stretchSpread": (max(ux) - min(ux))/L,
+}
+print("largeStrainTension: stretch %.6f, nominal stress %.6g Pa applied, "
+      "%.6g Pa exact: error %.2e; lateral stretch error %.2e"
+      % (stretch, pApplied, pExact, res["forceRelError"],
+         res["lateralStretchRelError"]))
+foamio.writeResults(os.path.join(case, "results.dat"), res,
+                    "neo-Hookean uniaxial tension")
