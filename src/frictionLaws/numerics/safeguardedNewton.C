@@ -14,5 +14,6 @@ License
 
 std::atomic<long> Foam::safeguardedNewton::nLimitHits_(0);
 std::atomic<long> Foam::safeguardedNewton::nSolves_(0);
+std::atomic<long> Foam::safeguardedNewton::nIterations_(0);
 
 // ************************************************************************* //

@@ -160,7 +160,13 @@ void Foam::frictionLaws::rateState::update
     };
 
     radialReturn::output rr;
-    radialReturn::solve(xiTrial, Zero, KT_, KT_, P, threshold, rr);
+    // The last step's rate is the natural first guess of the slip increment
+    const scalar dgGuess =
+        old.status == frictionState::SLIP ? old.slipRate*dt : -1;
+    radialReturn::solve
+    (
+        xiTrial, Zero, KT_, KT_, P, threshold, rr, nullptr, dgGuess
+    );
     setFromReturn(old, in, rr, out);
 
     const scalar v = rr.dg/dt;

@@ -29,12 +29,14 @@ Foam::frictionStateLaws::relaxation::relaxation(const dictionary& dict)
 :
     frictionStateLaw(dict),
     tRelax_(frictionParameters::positive(dict, "relaxationTime")),
-    gamma_(frictionParameters::nonNegative(dict, "gamma", 1))
+    gamma_(frictionParameters::nonNegative(dict, "gamma", 1)),
+    lnPhiRef_(0)
 {
     if (dict.found("phiSs"))
     {
         phiSs_ = Function1<scalar>::New("phiSs", dict);
     }
+    lnPhiRef_ = std::log(steadyState(VStar_));
 }
 
 

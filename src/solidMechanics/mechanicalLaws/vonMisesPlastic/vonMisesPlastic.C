@@ -188,4 +188,55 @@ Foam::tensor Foam::mechanicalLaws::vonMisesPlastic::stress
 }
 
 
+Foam::tensor Foam::mechanicalLaws::vonMisesPlastic::acousticTensor
+(
+    const tensor& F,
+    const materialState& old,
+    const vector& n
+) const
+{
+    const tensor elastic(mechanicalLaw::acousticTensor(F, old, n));
+
+    if (det(F) <= 0)
+    {
+        return elastic;
+    }
+
+    const symmTensor beTrial(symm(F & old.CpInv & F.T()));
+    const symmetricEigen eig(beTrial);
+    const vector eps
+    (
+        0.5*Foam::log(eig.values.x()),
+        0.5*Foam::log(eig.values.y()),
+        0.5*Foam::log(eig.values.z())
+    );
+    const vector devEps(eps - (eps.x() + eps.y() + eps.z())/3*vector::one);
+    const scalar G = mu();
+    const scalar qTrial = Foam::sqrt(1.5)*2*G*mag(devEps);
+
+    if (qTrial <= yieldStress(old.epsilonP))
+    {
+        return elastic;
+    }
+
+    // [S16] consistent J2 tangent C = K 1x1 + 2 G theta Idev
+    // - 2 G thetaBar N x N, contracted with n on both sides
+    const scalar dg = plasticMultiplier(qTrial, old.epsilonP);
+    const scalar epsP = old.epsilonP + dg;
+    const scalar h = 1e-7*epsP + 1e-10;
+    const scalar H =
+        max((yieldStress(epsP + h) - yieldStress(epsP))/h, scalar(0));
+    const scalar theta = 1 - 3*G*dg/qTrial;
+    const scalar thetaBar = 1/(1 + H/(3*G)) - (1 - theta);
+
+    const symmTensor N(eig.compose(devEps/mag(devEps)));
+    const vector m(N & n);
+
+    const scalar Gt = G*theta;
+    return
+        Gt*tensor::I + (bulkModulus() + Gt/3)*sqr(n)
+      - 2*G*max(thetaBar, scalar(0))*sqr(m);
+}
+
+
 // ************************************************************************* //

@@ -46,6 +46,27 @@ void Foam::blockPreconditioner::addDiagonal(const label P, const tensor& K)
 }
 
 
+void Foam::blockPreconditioner::addBlock
+(
+    const label P,
+    const label Q,
+    const tensor& K
+)
+{
+    const label nc = comps_.size();
+    for (label a = 0; a < nc; ++a)
+    {
+        for (label b = 0; b < nc; ++b)
+        {
+            entries_.emplace_back
+            (
+                P*nc + a, Q*nc + b, K.component(3*comps_[a] + comps_[b])
+            );
+        }
+    }
+}
+
+
 void Foam::blockPreconditioner::addCoupling
 (
     const label P,

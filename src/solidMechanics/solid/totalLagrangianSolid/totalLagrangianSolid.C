@@ -232,23 +232,32 @@ void Foam::totalLagrangianSolid::computeGradientWeights()
 
 void Foam::totalLagrangianSolid::assemblePreconditioner
 (
-    const bool withPatchStiffness
+    const bool withPatchStiffness,
+    const bool withMaterialTangent
 )
 {
-    // [S16] compact-stencil elastic operator: a face passes the traction
-    // c (mu I + (lambda + mu) n n) (D_N - D_P), c = |S|/|d|
-    const scalar mu = law_->mu();
-    const scalar lambda = law_->lambda();
+    // [S16] compact-stencil operator: a face passes the traction
+    // c A (D_N - D_P), c = |S|/|d|, with A the acoustic tensor of the law
+    // (elastic: mu I + (lambda + mu) n n; plastic: the consistent tangent's)
+    const mechanicalLaw& law = law_();
+    const scalar mu = law.mu();
+    const scalar lambda = law.lambda();
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
     const vectorField& Sf = mesh_.Sf();
     const volVectorField& C = mesh_.C();
 
+    // With volume averaging the compact face stencil carries only the
+    // deviatoric part, mu I + mu/3 n n; the volumetric part acts through
+    // the cells' divergence and is added below as K V div^T div
+    const scalar lambdaCompact =
+        volumetricAveraging_ ? lambda - law.bulkModulus() : lambda;
+
     auto faceStiffness = [&](const vector& S, const vector& d)
     {
         const scalar magS = mag(S);
         const vector n(S/magS);
-        return (magS/mag(d))*(mu*tensor::I + (lambda + mu)*sqr(n));
+        return (magS/mag(d))*(mu*tensor::I + (lambdaCompact + mu)*sqr(n));
     };
 
     precon_.clear();
@@ -257,10 +266,24 @@ void Foam::totalLagrangianSolid::assemblePreconditioner
 
     forAll(own, facei)
     {
-        const tensor K
-        (
-            faceStiffness(Sf[facei], C[nei[facei]] - C[own[facei]])
-        );
+        const vector d(C[nei[facei]] - C[own[facei]]);
+        tensor K;
+        if (withMaterialTangent)
+        {
+            materialState old;
+            old.CpInv = CpInv_[facei];
+            old.epsilonP = epsilonPf_[facei];
+            const scalar magS = mag(Sf[facei]);
+            K = (magS/mag(d))
+               *law.acousticTensor
+                (
+                    internalFaceDefGrad(facei), old, Sf[facei]/magS
+                );
+        }
+        else
+        {
+            K = faceStiffness(Sf[facei], d);
+        }
         precon_.addCoupling(own[facei], nei[facei], K);
         meanDiag += 2*tr(K);
     }
@@ -331,13 +354,18 @@ void Foam::totalLagrangianSolid::assemblePreconditioner
         }
     }
 
+    if (volumetricAveraging_)
+    {
+        addVolumetricStiffness();
+    }
+
     const scalarField& V = mesh_.V();
     const scalar nCells = max(mesh_.nCells(), 1);
     meanDiag /= (nCells*vector::nComponents);
 
     const scalar dt = mesh_.time().deltaTValue();
     const scalar inertiaCoeff =
-        inertia_ ? 2*law_->rho()/(dt*(dt + deltaT0_)) : 0;
+        inertia_ ? 2*law.rho()/(dt*(dt + deltaT0_)) : 0;
 
     // A tiny diagonal shift keeps M definite when rigid-body modes are
     // held only by the nonlinear boundary terms
@@ -357,6 +385,80 @@ void Foam::totalLagrangianSolid::assemblePreconditioner
             << exit(FatalError);
     }
     preconDeltaT_ = dt;
+}
+
+
+void Foam::totalLagrangianSolid::addVolumetricStiffness()
+{
+    // [S16] K V_P b_Q b_R^T for every pair of cells Q, R in the
+    // least-squares divergence of cell P: div D_P = sum_Q b_Q . D_Q
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const cellList& cellFaces = mesh_.cells();
+    const scalarField& V = mesh_.V();
+    const scalar K = law_->bulkModulus();
+
+    DynamicList<label> cells(16);
+    DynamicList<vector> b(16);
+
+    forAll(cellFaces, P)
+    {
+        cells.clear();
+        b.clear();
+        cells.append(P);
+        b.append(Zero);
+
+        for (const label facei : cellFaces[P])
+        {
+            if (facei < mesh_.nInternalFaces())
+            {
+                const bool isOwner = own[facei] == P;
+                const vector& ls = isOwner ? ownLs_[facei] : neiLs_[facei];
+                // G_P += ls (D_N - D_P) for the owner, ls (D_N - D_P) with
+                // the face's N,P for the neighbour: sign by side
+                const label Q = isOwner ? nei[facei] : own[facei];
+                const scalar sign = isOwner ? 1 : -1;
+                cells.append(Q);
+                b.append(sign*ls);
+                b[0] -= sign*ls;
+            }
+            else
+            {
+                const label patchi =
+                    mesh_.boundaryMesh().whichPatch(facei);
+                const label i =
+                    facei - mesh_.boundaryMesh()[patchi].start();
+                const vector& ls = patchLs_[patchi][i];
+                switch (patchKinds_[patchi])
+                {
+                    case FIXED:
+                    case COUPLED:
+                        b[0] -= ls;
+                        break;
+                    case SYMMETRY:
+                    {
+                        const vector n
+                        (
+                            mesh_.boundary()[patchi].nf()()[i]
+                        );
+                        b[0] -= 2*(ls & n)*n;
+                        break;
+                    }
+                    default:
+                        break;
+                }
+            }
+        }
+
+        const scalar KV = K*V[P];
+        forAll(cells, q)
+        {
+            forAll(cells, r)
+            {
+                precon_.addBlock(cells[q], cells[r], KV*(b[q]*b[r]));
+            }
+        }
+    }
 }
 
 

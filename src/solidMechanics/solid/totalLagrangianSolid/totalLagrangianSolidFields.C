@@ -22,29 +22,15 @@ void Foam::totalLagrangianSolid::updateOutputFields()
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
     const scalarField& magSf = mesh_.magSf();
-    const vectorField& u = Dwork_.primitiveField();
-    const tensorField& G = gradD_.primitiveField();
-
     symmTensorField sigma(mesh_.nCells(), Zero);
     scalarField epsP(mesh_.nCells(), Zero);
     scalarField area(mesh_.nCells(), Zero);
-
-    const surfaceScalarField& weights = mesh_.weights();
-    const volVectorField& C = mesh_.C();
 
     forAll(own, facei)
     {
         const label P = own[facei];
         const label N = nei[facei];
-        const scalar w = weights[facei];
-        const tensor F
-        (
-            volumeAveraged
-            (
-                faceDefGrad(G[P], G[N], w, C[N] - C[P], u[N] - u[P]),
-                w*Jcell_[P] + (1 - w)*Jcell_[N]
-            )
-        );
+        const tensor F(internalFaceDefGrad(facei));
         materialState s;
         materialState old;
         old.CpInv = CpInv_[facei];

@@ -109,8 +109,6 @@ void Foam::totalLagrangianSolid::residual(vectorField& R)
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
     const vectorField& Sf = mesh_.Sf();
-    const surfaceScalarField& weights = mesh_.weights();
-    const volVectorField& C = mesh_.C();
     const vectorField& u = Dwork_.primitiveField();
     const tensorField& G = gradD_.primitiveField();
     const mechanicalLaw& law = law_();
@@ -123,15 +121,7 @@ void Foam::totalLagrangianSolid::residual(vectorField& R)
     {
         const label P = own[facei];
         const label N = nei[facei];
-        const scalar w = weights[facei];
-        const tensor F
-        (
-            volumeAveraged
-            (
-                faceDefGrad(G[P], G[N], w, C[N] - C[P], u[N] - u[P]),
-                w*Jcell_[P] + (1 - w)*Jcell_[N]
-            )
-        );
+        const tensor F(internalFaceDefGrad(facei));
         materialState old;
         old.CpInv = CpInv_[facei];
         old.epsilonP = epsilonPf_[facei];
@@ -310,16 +300,18 @@ void Foam::totalLagrangianSolid::updatePreconditioner
     const bool dtChanged =
         inertia_ && mag(mesh_.time().deltaTValue() - preconDeltaT_) > 0;
 
-    if (patchStiffness)
+    // The elastic operator is fixed in the total Lagrangian description:
+    // factorised once unless the law softens or patches add stiffness
+    if (patchStiffness || law_->plastic())
     {
         unpack(x, Dwork_.primitiveFieldRef());
         Dwork_.correctBoundaryConditions();
         updateGradient();
-        assemblePreconditioner(true);
+        assemblePreconditioner(patchStiffness, law_->plastic());
     }
     else if (preconDeltaT_ < 0 || dtChanged)
     {
-        assemblePreconditioner(false);
+        assemblePreconditioner(false, false);
     }
 }
 
