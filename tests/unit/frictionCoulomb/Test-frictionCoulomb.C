@@ -14,6 +14,7 @@ Description
 #include "unitTest.H"
 #include "frictionTestTools.H"
 #include "OStringStream.H"
+#include "List.H"
 
 using namespace Foam;
 
@@ -129,6 +130,21 @@ int main()
         frictionState back;
         is >> back;
         unitTest::checkTrue("read back == written", back == r.state);
+
+        // A list, as the boundary condition writes it
+        List<frictionState> states(3, r.state);
+        states[1] = law->initialState();
+        OStringStream ol;
+        ol.precision(17);
+        ol << states;
+        IStringStream il(ol.str());
+        List<frictionState> statesBack(il);
+        unitTest::checkTrue
+        (
+            "list read back == written",
+            statesBack.size() == 3 && statesBack[0] == states[0]
+         && statesBack[1] == states[1] && statesBack[2] == states[2]
+        );
     }
 
     Info<< "Input checks" << endl;
