@@ -3,7 +3,7 @@ License
     This file is part of triboFoam, GPL-3.0-or-later.
 
 Description
-    Curnier's law (L2-L10; doc/theory-frictionLaws.md [F9], [F10]):
+    Curnier's law (L2-L10; doc/theory.md [F9], [F10]):
       - each criterion's yield surface: after a return the traction lies on
         the surface (coulomb with adhesion, anisotropicCoulomb along e1, e2
         and 45 degrees, paraboloid, power n = 3), and a trial inside sticks;

@@ -13,7 +13,7 @@ Description
     Case 1: ageing law, k* = (b - a) sigma/L.
     Case 2: paper board, relaxation law L17 with power-law phi_ss; the
     same linearisation gives k* = sigma (b gamma - a) G_phi / V with
-    G_phi = 1/(t** phi_ss(V)) (doc/theory-frictionLaws.md [F22]).
+    G_phi = 1/(t** phi_ss(V)) (doc/theory.md [F22]).
     The contact stiffness KT acts in series with k: the spring is set to
     k = 1/(1/k_target - 1/KT) so that the series stiffness is k_target.
 
