@@ -1,0 +1,328 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+
+Description
+    frictionalContact: forces and stiffness handed to the solver, the commit
+    of a converged step, reports and the fields written for ParaView.
+
+\*---------------------------------------------------------------------------*/
+
+#include "frictionalContactFvPatchVectorField.H"
+#include "addToRunTimeSelectionTable.H"
+#include "volFields.H"
+#include "OFstream.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+//- Diagnostic field of the mesh: found, or created (zero, written)
+template<class Type>
+static GeometricField<Type, fvPatchField, volMesh>& contactField
+(
+    const objectRegistry& db,
+    const fvMesh& mesh,
+    const word& name,
+    const dimensionSet& dims
+)
+{
+    typedef GeometricField<Type, fvPatchField, volMesh> fieldType;
+    if (!db.foundObject<fieldType>(name))
+    {
+        fieldType* fldPtr = new fieldType
+        (
+            IOobject
+            (
+                name,
+                mesh.time().timeName(),
+                mesh,
+                IOobject::NO_READ,
+                IOobject::AUTO_WRITE
+            ),
+            mesh,
+            dimensioned<Type>(dims, Zero)
+        );
+        fldPtr->store();
+    }
+    return const_cast<fieldType&>(db.lookupObject<fieldType>(name));
+}
+
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::frictionalContactFvPatchVectorField::updateFields() const
+{
+    const fvMesh& mesh = patch().boundaryMesh().mesh();
+    const label pi = patch().index();
+
+    auto scalarOut = [&](const word& name, const dimensionSet& dims)
+        -> scalarField&
+    {
+        return contactField<scalar>(db(), mesh, name, dims)
+            .boundaryFieldRef()[pi];
+    };
+    auto vectorOut = [&](const word& name, const dimensionSet& dims)
+        -> vectorField&
+    {
+        return contactField<vector>(db(), mesh, name, dims)
+            .boundaryFieldRef()[pi];
+    };
+
+    scalarField& theta = scalarOut("contactAge", dimTime);
+    scalarField& alpha = scalarOut("lubricationWeight", dimless);
+    scalarField& rate = scalarOut("slipRate", dimVelocity);
+    scalarField& status = scalarOut("contactStatus", dimless);
+    scalarField& cumulated = scalarOut("cumulatedSlip", dimLength);
+    vectorField& slip = vectorOut("plasticSlip", dimLength);
+
+    forAll(state_, i)
+    {
+        const frictionState& s = state_[i];
+        theta[i] = s.contactAge;
+        alpha[i] = s.lubricationWeight;
+        rate[i] = s.slipRate;
+        status[i] = s.status;
+        cumulated[i] = s.cumulatedSlip;
+        slip[i] = s.plasticSlip;
+    }
+}
+
+
+void Foam::frictionalContactFvPatchVectorField::writeIntegrals() const
+{
+    if (!Pstream::master())
+    {
+        return;
+    }
+    const Time& runTime = db().time();
+    const fileName dir(runTime.globalPath()/"postProcessing"/"contact");
+    mkDir(dir);
+    const fileName file(dir/(patch().name() + ".dat"));
+    const bool fresh = !isFile(file);
+    OFstream os
+    (
+        file, IOstream::ASCII, IOstream::currentVersion,
+        IOstream::UNCOMPRESSED, true
+    );
+    if (fresh)
+    {
+        os  << "# time normalForce(x y z) [N] frictionForce(x y z) [N]"
+            << " dissipatedEnergy [J] maxPenetration [m]"
+            << " at(x y z) contactFaces slipFaces" << nl;
+    }
+    os  << runTime.value() << ' '
+        << normalForce_.x() << ' ' << normalForce_.y() << ' '
+        << normalForce_.z() << ' '
+        << frictionForce_.x() << ' ' << frictionForce_.y() << ' '
+        << frictionForce_.z() << ' '
+        << dissipatedEnergy_ << ' ' << maxPenetration_ << ' '
+        << maxPenetrationAt_.x() << ' ' << maxPenetrationAt_.y() << ' '
+        << maxPenetrationAt_.z() << ' ' << nContact_ << ' ' << nSlip_ << nl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::frictionalContactFvPatchVectorField::force
+(
+    const solidPatchKinematics& k,
+    vectorField& f
+) const
+{
+    frictionResult res;
+    vector n;
+    scalar area;
+    forAll(f, i)
+    {
+        label hint = hint_[i];
+        if (evaluateFace(i, k, res, n, area, hint))
+        {
+            // [C1] traction on the body: tN n - tT
+            f[i] = area*(res.tN*n - res.tT);
+        }
+        else
+        {
+            f[i] = Zero;
+        }
+    }
+}
+
+
+bool Foam::frictionalContactFvPatchVectorField::stiffness
+(
+    const solidPatchKinematics& k,
+    tensorField& K
+) const
+{
+    // [C6] -df/dD from the law's consistent tangent (gN = -gap: dgN/dD = -n)
+    frictionResult res;
+    vector n;
+    scalar area;
+    forAll(K, i)
+    {
+        label hint = hint_[i];
+        if (evaluateFace(i, k, res, n, area, hint) && res.tN > 0)
+        {
+            const tensor P(tensor::I - sqr(n));
+            K[i] = area*(res.dtNdgN*sqr(n) + (res.dtTdgT & P));
+            // keep the preconditioner symmetric and definite
+            K[i] = symm(K[i]);
+        }
+        else
+        {
+            K[i] = Zero;
+        }
+    }
+    return true;
+}
+
+
+void Foam::frictionalContactFvPatchVectorField::commit
+(
+    const solidPatchKinematics& k
+)
+{
+    normalForce_ = Zero;
+    frictionForce_ = Zero;
+    maxPenetration_ = 0;
+    maxPenetrationAt_ = Zero;
+    nContact_ = 0;
+    nSlip_ = 0;
+
+    frictionResult res;
+    vector n;
+    scalar area;
+
+    forAll(state_, i)
+    {
+        label hint = hint_[i];
+        if (evaluateFace(i, k, res, n, area, hint))
+        {
+            // [C7] dissipation: friction traction times plastic slip
+            dissipatedEnergy_ +=
+                area*(res.tT & (res.state.plasticSlip - state_[i].plasticSlip));
+            state_[i] = res.state;
+            hint_[i] = hint;
+
+            normalForce_ += area*res.tN*n;
+            frictionForce_ -= area*res.tT;
+            if (res.tN > 0)
+            {
+                ++nContact_;
+                if (res.state.status == 2)
+                {
+                    ++nSlip_;
+                }
+                const scalar pen = res.tN/law().KN();
+                if (pen > maxPenetration_)
+                {
+                    maxPenetration_ = pen;
+                    maxPenetrationAt_ = k.Cf0[i] + k.D[i];
+                }
+            }
+        }
+        else
+        {
+            // out of reach: an open face, fresh if it comes back
+            frictionState s(law().initialState());
+            s.cumulatedSlip = state_[i].cumulatedSlip;
+            state_[i] = s;
+            hint_[i] = -1;
+        }
+    }
+
+    reduce(normalForce_, sumOp<vector>());
+    reduce(frictionForce_, sumOp<vector>());
+    reduce(dissipatedEnergy_, sumOp<scalar>());
+    reduce(nContact_, sumOp<label>());
+    reduce(nSlip_, sumOp<label>());
+    {
+        // location of the largest penetration over all processors
+        List<scalar> pens(Pstream::nProcs(), 0);
+        List<point> where(Pstream::nProcs(), Zero);
+        pens[Pstream::myProcNo()] = maxPenetration_;
+        where[Pstream::myProcNo()] = maxPenetrationAt_;
+        Pstream::gatherList(pens);
+        Pstream::gatherList(where);
+        Pstream::scatterList(pens);
+        Pstream::scatterList(where);
+        const label iMax = findMax(pens);
+        maxPenetration_ = pens[iMax];
+        maxPenetrationAt_ = where[iMax];
+    }
+
+    updateFields();
+    writeIntegrals();
+}
+
+
+void Foam::frictionalContactFvPatchVectorField::report
+(
+    const solidPatchKinematics& k
+) const
+{
+    Info<< "    contact " << patch().name() << ": " << nContact_
+        << " faces in contact (" << nSlip_ << " slipping), normal force "
+        << normalForce_ << " N, friction force " << frictionForce_
+        << " N, dissipated " << dissipatedEnergy_ << " J, largest"
+        << " penetration " << maxPenetration_ << " m at "
+        << maxPenetrationAt_ << endl;
+}
+
+
+void Foam::frictionalContactFvPatchVectorField::write(Ostream& os) const
+{
+    fvPatchVectorField::write(os);
+    os.writeKeyword("obstacle") << obstacleDict_;
+    os.writeKeyword("frictionLaw") << lawDict_;
+    os.writeEntry("penaltyScale", penaltyScale_);
+    os.writeEntry("searchDistance", searchDistance_);
+
+    // Face state for restart
+    const label n = state_.size();
+    vectorField gT(n), gTp(n), tear(n);
+    scalarField gN(n), Dc(n), theta(n), alpha(n), rate(n), status(n);
+    forAll(state_, i)
+    {
+        const frictionState& s = state_[i];
+        gT[i] = s.totalSlip;
+        gTp[i] = s.plasticSlip;
+        tear[i] = s.tearSlip;
+        gN[i] = s.normalSlip;
+        Dc[i] = s.cumulatedSlip;
+        theta[i] = s.contactAge;
+        alpha[i] = s.lubricationWeight;
+        rate[i] = s.slipRate;
+        status[i] = s.status;
+    }
+    gT.writeEntry("totalSlip", os);
+    gTp.writeEntry("plasticSlip", os);
+    tear.writeEntry("tearSlip", os);
+    gN.writeEntry("normalSlip", os);
+    Dc.writeEntry("cumulatedSlip", os);
+    theta.writeEntry("contactAge", os);
+    alpha.writeEntry("lubricationWeight", os);
+    rate.writeEntry("slipRate", os);
+    status.writeEntry("contactStatus", os);
+    os.writeEntry("dissipatedEnergy", dissipatedEnergy_);
+    writeEntry("value", os);
+}
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    makePatchTypeField
+    (
+        fvPatchVectorField,
+        frictionalContactFvPatchVectorField
+    );
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,349 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "frictionalContactFvPatchVectorField.H"
+#include "addToRunTimeSelectionTable.H"
+#include "wallFvPatch.H"
+#include "volFields.H"
+#include "IOdictionary.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::frictionalContactFvPatchVectorField::automaticPenalty()
+const
+{
+    // [C5] a face penalty as stiff as penaltyScale cells of the solid
+    const dictionary& lawDict =
+        db().lookupObject<IOdictionary>("mechanicalProperties")
+       .subDict("mechanicalLaw");
+    const scalar E = lawDict.get<scalar>("E");
+    const scalar nu = lawDict.get<scalar>("nu");
+
+    const scalarField& V = patch().boundaryMesh().mesh().V();
+    const labelUList& fc = patch().faceCells();
+    const scalarField& magSf = patch().magSf();
+    scalar sumDepth = 0;
+    forAll(fc, i)
+    {
+        sumDepth += V[fc[i]]/magSf[i];
+    }
+    const scalar h =
+        returnReduce(sumDepth, sumOp<scalar>())
+       /max(returnReduce(fc.size(), sumOp<label>()), 1);
+
+    return penaltyScale_*E/(1 - sqr(nu))/max(h, VSMALL);
+}
+
+
+void Foam::frictionalContactFvPatchVectorField::createLaw() const
+{
+    dictionary dict(lawDict_);
+    const bool automatic = !dict.found("KN") || !dict.found("KT");
+    if (automatic)
+    {
+        const scalar K = automaticPenalty();
+        if (!dict.found("KN")) { dict.add("KN", K); }
+        if (!dict.found("KT")) { dict.add("KT", K); }
+    }
+    law_ = frictionLaw::New(dict);
+    effectiveLawDict_ = dict;
+
+    Info<< "frictionalContact on patch " << patch().name() << ": law "
+        << lawDict_.get<word>("type") << ", obstacle "
+        << obstacleDict_.get<word>("type") << ", KN " << law_->KN()
+        << " Pa/m, KT " << law_->KT() << " Pa/m"
+        << (automatic ? " (automatic)" : "") << ", search distance "
+        << searchDistance_ << " m" << endl;
+}
+
+
+void Foam::frictionalContactFvPatchVectorField::copyFrom
+(
+    const frictionalContactFvPatchVectorField& ptf
+)
+{
+    obstacleDict_ = ptf.obstacleDict_;
+    lawDict_ = ptf.lawDict_;
+    effectiveLawDict_ = ptf.effectiveLawDict_;
+    obstacle_ = rigidObstacle::New(obstacleDict_, db().time().globalPath());
+    if (ptf.law_.valid())
+    {
+        law_ = frictionLaw::New(effectiveLawDict_);
+    }
+    penaltyScale_ = ptf.penaltyScale_;
+    searchDistance_ = ptf.searchDistance_;
+    state_ = ptf.state_;
+    hint_ = ptf.hint_;
+    normalForce_ = ptf.normalForce_;
+    frictionForce_ = ptf.frictionForce_;
+    dissipatedEnergy_ = ptf.dissipatedEnergy_;
+    maxPenetration_ = ptf.maxPenetration_;
+    maxPenetrationAt_ = ptf.maxPenetrationAt_;
+    nContact_ = ptf.nContact_;
+    nSlip_ = ptf.nSlip_;
+}
+
+
+const Foam::frictionLaw& Foam::frictionalContactFvPatchVectorField::law() const
+{
+    if (!law_.valid())
+    {
+        createLaw();
+    }
+    return law_();
+}
+
+
+void Foam::frictionalContactFvPatchVectorField::readState
+(
+    const dictionary& dict
+)
+{
+    const label n = patch().size();
+    const frictionState fresh =
+        law_.valid() ? law_->initialState() : frictionState();
+    state_.setSize(n, fresh);
+    hint_.setSize(n, -1);
+
+    // Restart: the state written by write() below
+    if (dict.found("totalSlip"))
+    {
+        const vectorField gT("totalSlip", dict, n);
+        const vectorField gTp("plasticSlip", dict, n);
+        const vectorField tear("tearSlip", dict, n);
+        const scalarField gN("normalSlip", dict, n);
+        const scalarField Dc("cumulatedSlip", dict, n);
+        const scalarField theta("contactAge", dict, n);
+        const scalarField alpha("lubricationWeight", dict, n);
+        const scalarField rate("slipRate", dict, n);
+        const scalarField status("contactStatus", dict, n);
+        forAll(state_, i)
+        {
+            frictionState& s = state_[i];
+            s.totalSlip = gT[i];
+            s.plasticSlip = gTp[i];
+            s.tearSlip = tear[i];
+            s.normalSlip = gN[i];
+            s.cumulatedSlip = Dc[i];
+            s.contactAge = theta[i];
+            s.lubricationWeight = alpha[i];
+            s.slipRate = rate[i];
+            s.status = label(status[i] + 0.5);
+        }
+    }
+    dissipatedEnergy_ = dict.lookupOrDefault<scalar>("dissipatedEnergy", 0);
+}
+
+
+bool Foam::frictionalContactFvPatchVectorField::evaluateFace
+(
+    const label facei,
+    const solidPatchKinematics& k,
+    frictionResult& res,
+    vector& gapNormal,
+    scalar& area,
+    label& hint
+) const
+{
+    const frictionState& old = state_[facei];
+
+    // [C2] geometry: deformed face centre against the obstacle
+    const point x(k.Cf0[facei] + k.D[facei]);
+    obstaclePoint cp;
+    if (!obstacle_->nearest(x, k.time, searchDistance_, cp, hint))
+    {
+        return false;
+    }
+    hint = cp.hint;
+    gapNormal = cp.n;
+
+    // [C3] slip relative to the obstacle in the current tangent plane
+    // (objective rate, L22): the face's motion over the step less that of
+    // the obstacle's material point under it
+    const vector ds
+    (
+        (k.D[facei] - k.Dold[facei])
+      - obstacle_->materialDisplacement(cp.p, k.time - k.deltaT, k.time)
+    );
+    const tensor P(tensor::I - sqr(cp.n));
+
+    frictionInput in;
+    in.gN = -cp.gap;
+    in.gT = P & (old.totalSlip + ds);
+    in.n = cp.n;
+    in.dt = k.deltaT;
+
+    law().update(old, in, res);
+
+    // [C4] current area, Nanson
+    const tensor& F = k.F[facei];
+    area = mag(det(F)*(inv(F).T() & k.Sf0[facei]));
+
+    return true;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
+(
+    const fvPatch& p,
+    const DimensionedField<vector, volMesh>& iF
+)
+:
+    calculatedFvPatchVectorField(p, iF),
+    penaltyScale_(100),
+    searchDistance_(GREAT),
+    normalForce_(Zero),
+    frictionForce_(Zero),
+    dissipatedEnergy_(0),
+    maxPenetration_(0),
+    maxPenetrationAt_(Zero),
+    nContact_(0),
+    nSlip_(0)
+{}
+
+
+Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
+(
+    const fvPatch& p,
+    const DimensionedField<vector, volMesh>& iF,
+    const dictionary& dict
+)
+:
+    calculatedFvPatchVectorField(p, iF, dict, false),
+    obstacleDict_(dict.subDict("obstacle")),
+    lawDict_(dict.subDict("frictionLaw")),
+    penaltyScale_(dict.lookupOrDefault<scalar>("penaltyScale", 100)),
+    searchDistance_(-1),
+    normalForce_(Zero),
+    frictionForce_(Zero),
+    dissipatedEnergy_(0),
+    maxPenetration_(0),
+    maxPenetrationAt_(Zero),
+    nContact_(0),
+    nSlip_(0)
+{
+    if (!isA<wallFvPatch>(p))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Patch " << p.name() << " (dictionary " << dict.name()
+            << "): type frictionalContact needs a patch of type 'wall' in"
+            << " constant/polyMesh/boundary; it is of type '" << p.type()
+            << "'" << nl << exit(FatalIOError);
+    }
+    if (!(penaltyScale_ > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'penaltyScale' in dictionary " << dict.name()
+            << " must be > 0, got " << penaltyScale_ << nl
+            << exit(FatalIOError);
+    }
+
+    // Default search distance: two cell depths
+    const scalarField& V = p.boundaryMesh().mesh().V();
+    scalar hMax = 0;
+    forAll(p.faceCells(), i)
+    {
+        hMax = max(hMax, V[p.faceCells()[i]]/p.magSf()[i]);
+    }
+    reduce(hMax, maxOp<scalar>());
+    searchDistance_ =
+        dict.lookupOrDefault<scalar>("searchDistance", 2*max(hMax, SMALL));
+    if (!(searchDistance_ > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'searchDistance' in dictionary " << dict.name()
+            << " must be > 0, got " << searchDistance_ << nl
+            << exit(FatalIOError);
+    }
+
+    obstacle_ = rigidObstacle::New(obstacleDict_, db().time().globalPath());
+
+    // The law needs the solid's moduli for automatic penalties; utilities
+    // such as decomposePar read D without them and only copy the entries
+    if (db().foundObject<IOdictionary>("mechanicalProperties"))
+    {
+        createLaw();
+    }
+
+    readState(dict);
+
+    if (dict.found("value"))
+    {
+        fvPatchVectorField::operator=(vectorField("value", dict, p.size()));
+    }
+    else
+    {
+        fvPatchVectorField::operator=(patchInternalField());
+    }
+}
+
+
+Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
+(
+    const frictionalContactFvPatchVectorField& ptf,
+    const fvPatch& p,
+    const DimensionedField<vector, volMesh>& iF,
+    const fvPatchFieldMapper& mapper
+)
+:
+    calculatedFvPatchVectorField(ptf, p, iF, mapper),
+    obstacleDict_(ptf.obstacleDict_),
+    lawDict_(ptf.lawDict_),
+    obstacle_(rigidObstacle::New(obstacleDict_, iF.time().globalPath())),
+    law_(),
+    penaltyScale_(ptf.penaltyScale_),
+    searchDistance_(ptf.searchDistance_),
+    state_(mapper.size()),
+    hint_(mapper.size(), -1),
+    normalForce_(Zero),
+    frictionForce_(Zero),
+    dissipatedEnergy_(ptf.dissipatedEnergy_),
+    maxPenetration_(0),
+    maxPenetrationAt_(Zero),
+    nContact_(0),
+    nSlip_(0)
+{
+    // Map the face state (decomposePar, reconstructPar)
+    if (mapper.direct())
+    {
+        const labelUList& addr = mapper.directAddressing();
+        forAll(addr, i)
+        {
+            if (addr[i] >= 0 && addr[i] < ptf.state_.size())
+            {
+                state_[i] = ptf.state_[addr[i]];
+            }
+        }
+    }
+}
+
+
+Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
+(
+    const frictionalContactFvPatchVectorField& ptf
+)
+:
+    calculatedFvPatchVectorField(ptf),
+    solidForceBoundary()
+{
+    copyFrom(ptf);
+}
+
+
+Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
+(
+    const frictionalContactFvPatchVectorField& ptf,
+    const DimensionedField<vector, volMesh>& iF
+)
+:
+    calculatedFvPatchVectorField(ptf, iF)
+{
+    copyFrom(ptf);
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,221 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam.
+
+    triboFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <https://www.gnu.org/licenses/>.
+
+    SPDX-License-Identifier: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
+
+#include "rigidObstacle.H"
+#include "error.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(rigidObstacle, 0);
+    defineRunTimeSelectionTable(rigidObstacle, dictionary);
+}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+Foam::vector Foam::rigidObstacle::readDirection
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const vector v(dict.get<vector>(key));
+    const scalar m = mag(v);
+
+    if (!(m > VSMALL))
+    {
+        FatalIOErrorInFunction(dict)
+            << "keyword '" << key << "': zero vector " << v
+            << " in dictionary " << dict.name() << nl
+            << "    a direction is required"
+            << exit(FatalIOError);
+    }
+
+    return v/m;
+}
+
+
+Foam::scalar Foam::rigidObstacle::readPositive
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const scalar s(dict.get<scalar>(key));
+
+    if (!(s > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "keyword '" << key << "': must be > 0, got " << s
+            << " in dictionary " << dict.name()
+            << exit(FatalIOError);
+    }
+
+    return s;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rigidObstacle::rigidObstacle(const dictionary& dict)
+:
+    dictName_(dict.name()),
+    translation_(),
+    rotationAxis_(0, 0, 1),
+    rotationOrigin_(dict.getOrDefault<point>("rotationOrigin", Zero)),
+    rotationAngle_()
+{
+    if (dict.found("translation"))
+    {
+        translation_ = Function1<vector>::New("translation", dict);
+        // Build any demand-driven look-up data now: later queries only read
+        translation_->value(0);
+    }
+
+    if (dict.found("rotationAxis"))
+    {
+        rotationAxis_ = readDirection(dict, "rotationAxis");
+    }
+
+    if (dict.found("rotationAngle"))
+    {
+        rotationAngle_ = Function1<scalar>::New("rotationAngle", dict);
+        rotationAngle_->value(0);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::rigidObstacle::moving() const
+{
+    return translation_.valid() || rotationAngle_.valid();
+}
+
+
+Foam::vector Foam::rigidObstacle::translation(const scalar t) const
+{
+    return translation_.valid() ? translation_->value(t) : vector(Zero);
+}
+
+
+Foam::tensor Foam::rigidObstacle::rotation(const scalar t) const
+{
+    if (!rotationAngle_.valid())
+    {
+        return tensor::I;
+    }
+
+    // Rodrigues: R = cos(a) I + sin(a) [k]x + (1 - cos(a)) k k
+    const scalar a = rotationAngle_->value(t);
+    const vector& k = rotationAxis_;
+    const scalar c = Foam::cos(a);
+    const scalar s = Foam::sin(a);
+
+    return
+        c*tensor::I
+      + s*tensor
+        (
+            0,    -k.z(),  k.y(),
+            k.z(),  0,    -k.x(),
+           -k.y(),  k.x(),  0
+        )
+      + (1 - c)*sqr(k);
+}
+
+
+Foam::point Foam::rigidObstacle::toCurrent
+(
+    const point& x0,
+    const scalar t
+) const
+{
+    if (!moving())
+    {
+        return x0;
+    }
+    return
+        (rotation(t) & (x0 - rotationOrigin_))
+      + rotationOrigin_ + translation(t);
+}
+
+
+Foam::point Foam::rigidObstacle::toInitial
+(
+    const point& x,
+    const scalar t
+) const
+{
+    if (!moving())
+    {
+        return x;
+    }
+    // R is orthogonal: R^-1 = R^T, and (v & R) = R^T v
+    return
+        ((x - rotationOrigin_ - translation(t)) & rotation(t))
+      + rotationOrigin_;
+}
+
+
+bool Foam::rigidObstacle::nearest
+(
+    const point& x,
+    const scalar t,
+    const scalar maxDistance,
+    obstaclePoint& cp,
+    const label hint
+) const
+{
+    if (!moving())
+    {
+        return nearestInitial(x, maxDistance, cp, hint);
+    }
+
+    const tensor R(rotation(t));
+    const vector T(translation(t));
+
+    const point x0 = ((x - rotationOrigin_ - T) & R) + rotationOrigin_;
+
+    obstaclePoint cp0;
+    if (!nearestInitial(x0, maxDistance, cp0, hint))
+    {
+        return false;
+    }
+
+    // Distances and hence the gap are invariant under the rigid motion
+    cp.p = (R & (cp0.p - rotationOrigin_)) + rotationOrigin_ + T;
+    cp.n = R & cp0.n;
+    cp.gap = cp0.gap;
+    cp.hint = cp0.hint;
+
+    return true;
+}
+
+
+Foam::vector Foam::rigidObstacle::materialDisplacement
+(
+    const point& p,
+    const scalar t0,
+    const scalar t1
+) const
+{
+    if (!moving())
+    {
+        return Zero;
+    }
+    return p - toCurrent(toInitial(p, t1), t0);
+}
+
+
+// ************************************************************************* //
