@@ -78,6 +78,12 @@ void Foam::frictionalContactFvPatchVectorField::updateFields() const
     scalarField& status = scalarOut("contactStatus", dimless);
     scalarField& cumulated = scalarOut("cumulatedSlip", dimLength);
     vectorField& slip = vectorOut("plasticSlip", dimLength);
+    scalarField& pressure = scalarOut("contactPressure", dimPressure);
+    vectorField& traction = vectorOut("frictionTraction", dimPressure);
+    scalarField& penetration = scalarOut("penetration", dimLength);
+    pressure = contactPressure_;
+    traction = frictionTraction_;
+    penetration = penetration_;
 
     forAll(state_, i)
     {
@@ -207,6 +213,9 @@ void Foam::frictionalContactFvPatchVectorField::commit
                 area*(res.tT & (res.state.plasticSlip - state_[i].plasticSlip));
             state_[i] = res.state;
             hint_[i] = hint;
+            contactPressure_[i] = res.tN;
+            frictionTraction_[i] = -res.tT;
+            penetration_[i] = res.tN/law().KN();
 
             normalForce_ += area*res.tN*n;
             frictionForce_ -= area*res.tT;
@@ -232,6 +241,9 @@ void Foam::frictionalContactFvPatchVectorField::commit
             s.cumulatedSlip = state_[i].cumulatedSlip;
             state_[i] = s;
             hint_[i] = -1;
+            contactPressure_[i] = 0;
+            frictionTraction_[i] = Zero;
+            penetration_[i] = 0;
         }
     }
 
@@ -242,8 +254,8 @@ void Foam::frictionalContactFvPatchVectorField::commit
     reduce(nSlip_, sumOp<label>());
     {
         // location of the largest penetration over all processors
-        List<scalar> pens(Pstream::nProcs(), 0);
-        List<point> where(Pstream::nProcs(), Zero);
+        scalarList pens(Pstream::nProcs(), scalar(0));
+        List<point> where(Pstream::nProcs(), point::zero);
         pens[Pstream::myProcNo()] = maxPenetration_;
         where[Pstream::myProcNo()] = maxPenetrationAt_;
         Pstream::gatherList(pens);

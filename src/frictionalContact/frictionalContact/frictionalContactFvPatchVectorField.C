@@ -76,6 +76,9 @@ void Foam::frictionalContactFvPatchVectorField::copyFrom
     searchDistance_ = ptf.searchDistance_;
     state_ = ptf.state_;
     hint_ = ptf.hint_;
+    contactPressure_ = ptf.contactPressure_;
+    frictionTraction_ = ptf.frictionTraction_;
+    penetration_ = ptf.penetration_;
     normalForce_ = ptf.normalForce_;
     frictionForce_ = ptf.frictionForce_;
     dissipatedEnergy_ = ptf.dissipatedEnergy_;
@@ -106,6 +109,9 @@ void Foam::frictionalContactFvPatchVectorField::readState
         law_.valid() ? law_->initialState() : frictionState();
     state_.setSize(n, fresh);
     hint_.setSize(n, -1);
+    contactPressure_.setSize(n, 0);
+    frictionTraction_.setSize(n, Zero);
+    penetration_.setSize(n, 0);
 
     // Restart: the state written by write() below
     if (dict.found("totalSlip"))
@@ -299,6 +305,9 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     searchDistance_(ptf.searchDistance_),
     state_(mapper.size()),
     hint_(mapper.size(), -1),
+    contactPressure_(mapper.size(), 0),
+    frictionTraction_(mapper.size(), Zero),
+    penetration_(mapper.size(), 0),
     normalForce_(Zero),
     frictionForce_(Zero),
     dissipatedEnergy_(ptf.dissipatedEnergy_),

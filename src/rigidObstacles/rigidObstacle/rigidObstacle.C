@@ -70,7 +70,6 @@ Foam::scalar Foam::rigidObstacle::readPositive
 
 Foam::rigidObstacle::rigidObstacle(const dictionary& dict)
 :
-    dictName_(dict.name()),
     translation_(),
     rotationAxis_(0, 0, 1),
     rotationOrigin_(dict.getOrDefault<point>("rotationOrigin", Zero)),
