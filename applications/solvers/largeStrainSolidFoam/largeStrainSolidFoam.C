@@ -104,14 +104,22 @@ int main(int argc, char *argv[])
 
             if (++nCutBacks > maxCutBacks)
             {
+                // Keep the last converged state on disk
+                runTime.setTime(t0, index0);
+                if (t0 > runTime.startTime().value())
+                {
+                    solid.prepareWrite();
+                    runTime.writeNow();
+                }
+
                 FatalErrorInFunction
                     << "The step to time " << runTime.value()
                     << " did not converge after " << maxCutBacks
                     << " cut-backs of the time step (last deltaT "
                     << runTime.deltaTValue() << " s, reason: " << res.reason
                     << ")." << nl
-                    << "The last converged time directory is "
-                    << t0 << "; check the loading, the boundary conditions"
+                    << "The last converged time, " << t0 << ", is written;"
+                    << " check the loading, the boundary conditions"
                     << " and the solid controls in system/fvSolution" << nl
                     << exit(FatalError);
             }

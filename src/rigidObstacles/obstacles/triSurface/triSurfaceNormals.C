@@ -35,20 +35,27 @@ void Foam::rigidObstacles::triSurfaceObstacle::calcNormals(const bool flip)
         faceNormals_ = -faceNormals_;
     }
 
-    // Interior angle of triangle f at its corner k
-    auto cornerAngle = [&](const label f, const label k)
+    // Weight of triangle f in the normal at its corner k: the interior
+    // angle (independent of how a face is split into triangles), for the
+    // smooth corner normals times the area (a long flat facet meeting short facets of an arc at a tangent
+    // point keeps its normal there, which is the curve's; with the angle
+    // alone, an extruded strip weighs both sides equally and the normal
+    // at the tangent point is off by a quarter of the arc's facet angle)
+    auto cornerWeight = [&](const label f, const label k, const bool area)
     {
         const labelledTri& tri = faces[f];
         const point& p = pts[tri[k]];
-        vector a = pts[tri[(k + 1) % 3]] - p;
-        vector b = pts[tri[(k + 2) % 3]] - p;
+        const vector a = pts[tri[(k + 1) % 3]] - p;
+        const vector b = pts[tri[(k + 2) % 3]] - p;
         const scalar ma = mag(a);
         const scalar mb = mag(b);
         if (ma < VSMALL || mb < VSMALL)
         {
             return scalar(0);
         }
-        return Foam::acos(max(-1.0, min(1.0, (a & b)/(ma*mb))));
+        const scalar angle =
+            Foam::acos(max(-1.0, min(1.0, (a & b)/(ma*mb))));
+        return area ? angle*0.5*mag(a ^ b) : angle;
     };
 
     // Corner index of point v in triangle f
@@ -58,14 +65,15 @@ void Foam::rigidObstacles::triSurfaceObstacle::calcNormals(const bool flip)
         return tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
     };
 
-    // Angle-weighted pseudo-normals of the points
+    // Angle-weighted pseudo-normals of the points (their sign tells the
+    // side of a point nearest to the vertex, Baerentzen and Aanaes 2005)
     pointNormals_.setSize(pts.size());
     forAll(pts, v)
     {
         vector n = Zero;
         for (const label g : pointFaces[v])
         {
-            n += cornerAngle(g, cornerOf(g, v))*faceNormals_[g];
+            n += cornerWeight(g, cornerOf(g, v), false)*faceNormals_[g];
         }
         const scalar m = mag(n);
         pointNormals_[v] = m > VSMALL ? vector(n/m) : vector(Zero);
@@ -83,7 +91,7 @@ void Foam::rigidObstacles::triSurfaceObstacle::calcNormals(const bool flip)
             {
                 if ((faceNormals_[g] & faceNormals_[f]) >= featureCos_)
                 {
-                    n += cornerAngle(g, cornerOf(g, faces[f][k]))
+                    n += cornerWeight(g, cornerOf(g, faces[f][k]), true)
                         *faceNormals_[g];
                 }
             }

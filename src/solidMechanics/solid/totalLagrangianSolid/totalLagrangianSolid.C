@@ -579,6 +579,13 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
             << exit(FatalIOError);
     }
 
+    // Constructing from a tmp drops the write option: set it here so the
+    // plastic history reaches every written time (and a restart)
+    const IOobject::writeOption historyWrite =
+        law_->plastic() ? IOobject::AUTO_WRITE : IOobject::NO_WRITE;
+    CpInv_.writeOpt() = historyWrite;
+    epsilonPf_.writeOpt() = historyWrite;
+
     volumetricAveraging_ =
         mechanicalProperties_.lookupOrDefault<bool>("volumetricAveraging", true);
     for (direction d = 0; d < vector::nComponents; ++d)

@@ -209,6 +209,15 @@ void Foam::totalLagrangianSolid::commit(const Eigen::VectorXd& x)
 }
 
 
+void Foam::totalLagrangianSolid::prepareWrite()
+{
+    Dwork_.primitiveFieldRef() = D0_;
+    Dwork_.correctBoundaryConditions();
+    updateGradient();
+    updateOutputFields();
+}
+
+
 void Foam::totalLagrangianSolid::reportForces() const
 {
     // Reaction force on each fixed patch: the sum of P.S0 over its faces
