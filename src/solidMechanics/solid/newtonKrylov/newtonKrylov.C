@@ -186,6 +186,7 @@ Foam::newtonKrylov::result Foam::newtonKrylov::solve
     scalar normR = gNorm(R);
     scalar normRprev = normR;
     scalar eta = 1e-2;
+    label lastKrylov = -1;
 
     for (label it = 0; it <= maxNewton_; ++it)
     {
@@ -240,8 +241,9 @@ Foam::newtonKrylov::result Foam::newtonKrylov::solve
         }
         const scalar linTol = max(eta*normR, 0.1*forceTol_*Fscale);
 
-        sys.updatePreconditioner(x);
-        res.krylovIterations += gmres(sys, x, R, linTol, dx);
+        sys.updatePreconditioner(x, it, lastKrylov);
+        lastKrylov = gmres(sys, x, R, linTol, dx);
+        res.krylovIterations += lastKrylov;
         ++res.newtonIterations;
 
         // Backtracking line search on |R| (Armijo)

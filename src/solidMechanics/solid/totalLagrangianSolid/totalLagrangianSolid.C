@@ -552,6 +552,11 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
     deltaT0_(mesh.time().deltaTValue()),
     precon_(mesh.nCells(), comps_),
     preconDeltaT_(-1),
+    krylovRefresh_
+    (
+        mesh.solutionDict().subDict("solid")
+       .lookupOrDefault<label>("krylovRefresh", 15)
+    ),
     forceScale_(0),
     bodySize_(mag(mesh.bounds().span()))
 {

@@ -285,7 +285,9 @@ void Foam::totalLagrangianSolid::residual
 
 void Foam::totalLagrangianSolid::updatePreconditioner
 (
-    const Eigen::VectorXd& x
+    const Eigen::VectorXd& x,
+    const label newtonIter,
+    const label lastKrylov
 )
 {
     bool patchStiffness = false;
@@ -302,7 +304,10 @@ void Foam::totalLagrangianSolid::updatePreconditioner
 
     // The elastic operator is fixed in the total Lagrangian description:
     // factorised once unless the law softens or patches add stiffness
-    if (patchStiffness || law_->plastic())
+    const bool refresh =
+        preconDeltaT_ < 0 || newtonIter == 0 || lastKrylov > krylovRefresh_;
+
+    if ((patchStiffness || law_->plastic()) && refresh)
     {
         unpack(x, Dwork_.primitiveFieldRef());
         Dwork_.correctBoundaryConditions();
