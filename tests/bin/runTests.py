@@ -164,6 +164,10 @@ def runCase(name, group, tdir, log):
         raise SpecError("%s/spec: tutorial folder '%s' not found"
                         % (tdir, src))
     shutil.copytree(src, work, symlinks=True)
+    if os.path.isfile(os.path.join(work, "Allclean")):
+        # start from a clean tutorial, whatever was run in the source tree
+        subprocess.run(["bash", "./Allclean"], cwd=work,
+                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     if "tutorial" in spec:
         # the test folder's own files (scripts, dictionaries) come on top
         for f in os.listdir(tdir):
