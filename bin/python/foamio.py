@@ -83,8 +83,9 @@ def readInternalField(path, nCells=None):
     return vals
 
 
-def readPatchField(path, patch):
-    """Values of boundaryField/patch/value as a list."""
+def readPatchField(path, patch, nFaces=None):
+    """Values of boundaryField/patch/value as a list; a uniform value is
+    repeated nFaces times when nFaces is given."""
     with open(path) as f:
         text = f.read()
     nComp = _nComp(text)
@@ -93,7 +94,9 @@ def readPatchField(path, patch):
         raise ValueError("patch %s not in %s" % (patch, path))
     vpos = text.index("value", m.end())
     kind, vals = _readField(text, vpos + len("value"), nComp)
-    return vals if kind == "nonuniform" else [vals]
+    if kind == "nonuniform":
+        return vals
+    return [vals]*(nFaces if nFaces else 1)
 
 
 def writeResults(path, values, comment=""):

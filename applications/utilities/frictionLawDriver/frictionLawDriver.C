@@ -17,7 +17,7 @@ Group
 
 Description
     Drives one contact point of any friction law, read from a dictionary,
-    with no mesh (doc/theory.md section 6):
+    with no mesh (doc/theory.md section 8.6):
       mode prescribed:   a slip-rate history, any Function1 of time
                          (constant, table with steps, holds, reversals...);
       mode springSlider: a block of mass per unit area M (may be 0) under

@@ -292,6 +292,7 @@ void Foam::frictionalContactFvPatchVectorField::write(Ostream& os) const
     os.writeKeyword("obstacle") << obstacleDict_;
     os.writeKeyword("frictionLaw") << lawDict_;
     os.writeEntry("penaltyScale", penaltyScale_);
+    os.writeEntry("tangentialPenaltyScale", tangentialPenaltyScale_);
     os.writeEntry("searchDistance", searchDistance_);
 
     // Face state for restart

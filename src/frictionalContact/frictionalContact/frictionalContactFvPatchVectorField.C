@@ -11,8 +11,10 @@ License
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::scalar Foam::frictionalContactFvPatchVectorField::automaticPenalty()
-const
+Foam::scalar Foam::frictionalContactFvPatchVectorField::automaticPenalty
+(
+    const scalar scale
+) const
 {
     // [C5] a face penalty as stiff as penaltyScale cells of the solid
     const dictionary& lawDict =
@@ -33,7 +35,7 @@ const
         returnReduce(sumDepth, sumOp<scalar>())
        /max(returnReduce(fc.size(), sumOp<label>()), 1);
 
-    return penaltyScale_*E/(1 - sqr(nu))/max(h, VSMALL);
+    return scale*E/(1 - sqr(nu))/max(h, VSMALL);
 }
 
 
@@ -43,9 +45,14 @@ void Foam::frictionalContactFvPatchVectorField::createLaw() const
     const bool automatic = !dict.found("KN") || !dict.found("KT");
     if (automatic)
     {
-        const scalar K = automaticPenalty();
-        if (!dict.found("KN")) { dict.add("KN", K); }
-        if (!dict.found("KT")) { dict.add("KT", K); }
+        if (!dict.found("KN"))
+        {
+            dict.add("KN", automaticPenalty(penaltyScale_));
+        }
+        if (!dict.found("KT"))
+        {
+            dict.add("KT", automaticPenalty(tangentialPenaltyScale_));
+        }
     }
     law_ = frictionLaw::New(dict);
     effectiveLawDict_ = dict;
@@ -73,6 +80,7 @@ void Foam::frictionalContactFvPatchVectorField::copyFrom
         law_ = frictionLaw::New(effectiveLawDict_);
     }
     penaltyScale_ = ptf.penaltyScale_;
+    tangentialPenaltyScale_ = ptf.tangentialPenaltyScale_;
     searchDistance_ = ptf.searchDistance_;
     state_ = ptf.state_;
     hint_ = ptf.hint_;
@@ -201,6 +209,7 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
 :
     calculatedFvPatchVectorField(p, iF),
     penaltyScale_(100),
+    tangentialPenaltyScale_(0.1),
     searchDistance_(GREAT),
     normalForce_(Zero),
     frictionForce_(Zero),
@@ -223,6 +232,10 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     obstacleDict_(dict.subDict("obstacle")),
     lawDict_(dict.subDict("frictionLaw")),
     penaltyScale_(dict.lookupOrDefault<scalar>("penaltyScale", 100)),
+    tangentialPenaltyScale_
+    (
+        dict.lookupOrDefault<scalar>("tangentialPenaltyScale", 0.1)
+    ),
     searchDistance_(-1),
     normalForce_(Zero),
     frictionForce_(Zero),
@@ -240,11 +253,12 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
             << " constant/polyMesh/boundary; it is of type '" << p.type()
             << "'" << nl << exit(FatalIOError);
     }
-    if (!(penaltyScale_ > 0))
+    if (!(penaltyScale_ > 0) || !(tangentialPenaltyScale_ > 0))
     {
         FatalIOErrorInFunction(dict)
-            << "Keyword 'penaltyScale' in dictionary " << dict.name()
-            << " must be > 0, got " << penaltyScale_ << nl
+            << "Keywords 'penaltyScale' and 'tangentialPenaltyScale' in"
+            << " dictionary " << dict.name() << " must be > 0, got "
+            << penaltyScale_ << " and " << tangentialPenaltyScale_ << nl
             << exit(FatalIOError);
     }
 
@@ -302,6 +316,7 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     obstacle_(rigidObstacle::New(obstacleDict_, iF.time().globalPath())),
     law_(),
     penaltyScale_(ptf.penaltyScale_),
+    tangentialPenaltyScale_(ptf.tangentialPenaltyScale_),
     searchDistance_(ptf.searchDistance_),
     state_(mapper.size()),
     hint_(mapper.size(), -1),
