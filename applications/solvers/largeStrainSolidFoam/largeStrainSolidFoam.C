@@ -102,7 +102,11 @@ int main(int argc, char *argv[])
                 << res.newtonIterations << " Newton iterations, force residual "
                 << res.forceResidual << endl;
 
-            if (++nCutBacks > maxCutBacks)
+            const scalar failedTime = runTime.value();
+            const bool tooSmall =
+                cutBackFactor*runTime.deltaTValue() < minDeltaTRatio*userDeltaT;
+
+            if (++nCutBacks > maxCutBacks || tooSmall)
             {
                 // Keep the last converged state on disk
                 runTime.setTime(t0, index0);
@@ -113,8 +117,8 @@ int main(int argc, char *argv[])
                 }
 
                 FatalErrorInFunction
-                    << "The step to time " << runTime.value()
-                    << " did not converge after " << maxCutBacks
+                    << "The step to time " << failedTime
+                    << " did not converge after " << nCutBacks
                     << " cut-backs of the time step (last deltaT "
                     << runTime.deltaTValue() << " s, reason: " << res.reason
                     << ")." << nl

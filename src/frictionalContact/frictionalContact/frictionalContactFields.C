@@ -125,7 +125,7 @@ void Foam::frictionalContactFvPatchVectorField::writeIntegrals() const
         << normalForce_.z() << ' '
         << frictionForce_.x() << ' ' << frictionForce_.y() << ' '
         << frictionForce_.z() << ' '
-        << dissipatedEnergy_ << ' ' << maxPenetration_ << ' '
+        << totalDissipation_ << ' ' << maxPenetration_ << ' '
         << maxPenetrationAt_.x() << ' ' << maxPenetrationAt_.y() << ' '
         << maxPenetrationAt_.z() << ' ' << nContact_ << ' ' << nSlip_ << nl;
 }
@@ -209,7 +209,7 @@ void Foam::frictionalContactFvPatchVectorField::commit
         if (evaluateFace(i, k, res, n, area, hint))
         {
             // [C7] dissipation: friction traction times plastic slip
-            dissipatedEnergy_ +=
+            dissipation_[i] +=
                 area*(res.tT & (res.state.plasticSlip - state_[i].plasticSlip));
             state_[i] = res.state;
             hint_[i] = hint;
@@ -247,9 +247,9 @@ void Foam::frictionalContactFvPatchVectorField::commit
         }
     }
 
+    totalDissipation_ = gSum(dissipation_);
     reduce(normalForce_, sumOp<vector>());
     reduce(frictionForce_, sumOp<vector>());
-    reduce(dissipatedEnergy_, sumOp<scalar>());
     reduce(nContact_, sumOp<label>());
     reduce(nSlip_, sumOp<label>());
     {
@@ -280,7 +280,7 @@ void Foam::frictionalContactFvPatchVectorField::report
     Info<< "    contact " << patch().name() << ": " << nContact_
         << " faces in contact (" << nSlip_ << " slipping), normal force "
         << normalForce_ << " N, friction force " << frictionForce_
-        << " N, dissipated " << dissipatedEnergy_ << " J, largest"
+        << " N, dissipated " << totalDissipation_ << " J, largest"
         << " penetration " << maxPenetration_ << " m at "
         << maxPenetrationAt_ << endl;
 }
@@ -294,6 +294,7 @@ void Foam::frictionalContactFvPatchVectorField::write(Ostream& os) const
     os.writeEntry("penaltyScale", penaltyScale_);
     os.writeEntry("tangentialPenaltyScale", tangentialPenaltyScale_);
     os.writeEntry("searchDistance", searchDistance_);
+    os.writeEntry("contactSmoothing", contactSmoothing_);
 
     // Face state for restart
     const label n = state_.size();
@@ -321,7 +322,7 @@ void Foam::frictionalContactFvPatchVectorField::write(Ostream& os) const
     alpha.writeEntry("lubricationWeight", os);
     rate.writeEntry("slipRate", os);
     status.writeEntry("contactStatus", os);
-    os.writeEntry("dissipatedEnergy", dissipatedEnergy_);
+    dissipation_.writeEntry("dissipatedEnergy", os);
     writeEntry("value", os);
 }
 

@@ -82,6 +82,7 @@ void Foam::frictionalContactFvPatchVectorField::copyFrom
     penaltyScale_ = ptf.penaltyScale_;
     tangentialPenaltyScale_ = ptf.tangentialPenaltyScale_;
     searchDistance_ = ptf.searchDistance_;
+    contactSmoothing_ = ptf.contactSmoothing_;
     state_ = ptf.state_;
     hint_ = ptf.hint_;
     contactPressure_ = ptf.contactPressure_;
@@ -89,7 +90,8 @@ void Foam::frictionalContactFvPatchVectorField::copyFrom
     penetration_ = ptf.penetration_;
     normalForce_ = ptf.normalForce_;
     frictionForce_ = ptf.frictionForce_;
-    dissipatedEnergy_ = ptf.dissipatedEnergy_;
+    totalDissipation_ = ptf.totalDissipation_;
+    dissipation_ = ptf.dissipation_;
     maxPenetration_ = ptf.maxPenetration_;
     maxPenetrationAt_ = ptf.maxPenetrationAt_;
     nContact_ = ptf.nContact_;
@@ -107,6 +109,26 @@ const Foam::frictionLaw& Foam::frictionalContactFvPatchVectorField::law() const
 }
 
 
+void Foam::frictionalContactFvPatchVectorField::copyFace
+(
+    const frictionalContactFvPatchVectorField& ptf,
+    const label from,
+    const label to
+)
+{
+    if (from < 0 || from >= ptf.state_.size())
+    {
+        return;
+    }
+    state_[to] = ptf.state_[from];
+    hint_[to] = -1;
+    contactPressure_[to] = ptf.contactPressure_[from];
+    frictionTraction_[to] = ptf.frictionTraction_[from];
+    penetration_[to] = ptf.penetration_[from];
+    dissipation_[to] = ptf.dissipation_[from];
+}
+
+
 void Foam::frictionalContactFvPatchVectorField::readState
 (
     const dictionary& dict
@@ -120,6 +142,7 @@ void Foam::frictionalContactFvPatchVectorField::readState
     contactPressure_.setSize(n, 0);
     frictionTraction_.setSize(n, Zero);
     penetration_.setSize(n, 0);
+    dissipation_.setSize(n, 0);
 
     // Restart: the state written by write() below
     if (dict.found("totalSlip"))
@@ -147,7 +170,10 @@ void Foam::frictionalContactFvPatchVectorField::readState
             s.status = label(status[i] + 0.5);
         }
     }
-    dissipatedEnergy_ = dict.lookupOrDefault<scalar>("dissipatedEnergy", 0);
+    if (dict.found("dissipatedEnergy"))
+    {
+        dissipation_ = scalarField("dissipatedEnergy", dict, n);
+    }
 }
 
 
@@ -184,7 +210,7 @@ bool Foam::frictionalContactFvPatchVectorField::evaluateFace
     const tensor P(tensor::I - sqr(cp.n));
 
     frictionInput in;
-    in.gN = -cp.gap;
+    in.gN = smoothedPenetration(-cp.gap);
     in.gT = P & (old.totalSlip + ds);
     in.n = cp.n;
     in.dt = k.deltaT;
@@ -211,9 +237,10 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     penaltyScale_(100),
     tangentialPenaltyScale_(0.1),
     searchDistance_(GREAT),
+    contactSmoothing_(0),
     normalForce_(Zero),
     frictionForce_(Zero),
-    dissipatedEnergy_(0),
+    totalDissipation_(0),
     maxPenetration_(0),
     maxPenetrationAt_(Zero),
     nContact_(0),
@@ -237,9 +264,10 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
         dict.lookupOrDefault<scalar>("tangentialPenaltyScale", 0.1)
     ),
     searchDistance_(-1),
+    contactSmoothing_(0),
     normalForce_(Zero),
     frictionForce_(Zero),
-    dissipatedEnergy_(0),
+    totalDissipation_(0),
     maxPenetration_(0),
     maxPenetrationAt_(Zero),
     nContact_(0),
@@ -272,6 +300,17 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     reduce(hMax, maxOp<scalar>());
     searchDistance_ =
         dict.lookupOrDefault<scalar>("searchDistance", 2*max(hMax, SMALL));
+
+    // [C2b] width of the smoothed onset of contact: 1e-3 of a cell depth
+    contactSmoothing_ =
+        dict.lookupOrDefault<scalar>("contactSmoothing", 1e-3*hMax);
+    if (contactSmoothing_ < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'contactSmoothing' in dictionary " << dict.name()
+            << " must be >= 0, got " << contactSmoothing_ << nl
+            << exit(FatalIOError);
+    }
     if (!(searchDistance_ > 0))
     {
         FatalIOErrorInFunction(dict)
@@ -311,36 +350,46 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
 )
 :
     calculatedFvPatchVectorField(ptf, p, iF, mapper),
-    obstacleDict_(ptf.obstacleDict_),
-    lawDict_(ptf.lawDict_),
-    obstacle_(rigidObstacle::New(obstacleDict_, iF.time().globalPath())),
-    law_(),
     penaltyScale_(ptf.penaltyScale_),
     tangentialPenaltyScale_(ptf.tangentialPenaltyScale_),
     searchDistance_(ptf.searchDistance_),
-    state_(mapper.size()),
-    hint_(mapper.size(), -1),
-    contactPressure_(mapper.size(), 0),
-    frictionTraction_(mapper.size(), Zero),
-    penetration_(mapper.size(), 0),
+    contactSmoothing_(ptf.contactSmoothing_),
     normalForce_(Zero),
     frictionForce_(Zero),
-    dissipatedEnergy_(ptf.dissipatedEnergy_),
+    totalDissipation_(0),
     maxPenetration_(0),
     maxPenetrationAt_(Zero),
     nContact_(0),
     nSlip_(0)
 {
-    // Map the face state (decomposePar, reconstructPar)
-    if (mapper.direct())
+    // iF may be a null field (reconstructPar): the time comes from the mesh
+    obstacleDict_ = ptf.obstacleDict_;
+    lawDict_ = ptf.lawDict_;
+    effectiveLawDict_ = ptf.effectiveLawDict_;
+    obstacle_ = rigidObstacle::New
+    (
+        obstacleDict_, p.boundaryMesh().mesh().time().globalPath()
+    );
+
+    const label n = mapper.size();
+    state_.setSize(n);
+    hint_.setSize(n, -1);
+    contactPressure_.setSize(n, 0);
+    frictionTraction_.setSize(n, Zero);
+    penetration_.setSize(n, 0);
+    dissipation_.setSize(n, 0);
+
+    if
+    (
+        mapper.direct()
+     && notNull(mapper.directAddressing())
+     && mapper.directAddressing().size()
+    )
     {
         const labelUList& addr = mapper.directAddressing();
         forAll(addr, i)
         {
-            if (addr[i] >= 0 && addr[i] < ptf.state_.size())
-            {
-                state_[i] = ptf.state_[addr[i]];
-            }
+            copyFace(ptf, addr[i], i);
         }
     }
 }
@@ -367,6 +416,51 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     calculatedFvPatchVectorField(ptf, iF)
 {
     copyFrom(ptf);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::frictionalContactFvPatchVectorField::autoMap
+(
+    const fvPatchFieldMapper& m
+)
+{
+    calculatedFvPatchVectorField::autoMap(m);
+
+    const frictionalContactFvPatchVectorField old(*this);
+    const label n = m.size();
+    state_.setSize(n);
+    hint_.setSize(n, -1);
+    contactPressure_.setSize(n, 0);
+    frictionTraction_.setSize(n, Zero);
+    penetration_.setSize(n, 0);
+    dissipation_.setSize(n, 0);
+    if (m.direct() && notNull(m.directAddressing()))
+    {
+        const labelUList& addr = m.directAddressing();
+        forAll(addr, i)
+        {
+            copyFace(old, addr[i], i);
+        }
+    }
+}
+
+
+void Foam::frictionalContactFvPatchVectorField::rmap
+(
+    const fvPatchVectorField& ptf,
+    const labelList& addr
+)
+{
+    calculatedFvPatchVectorField::rmap(ptf, addr);
+
+    const frictionalContactFvPatchVectorField& fcptf =
+        refCast<const frictionalContactFvPatchVectorField>(ptf);
+    forAll(addr, i)
+    {
+        copyFace(fcptf, i, addr[i]);
+    }
 }
 
 

@@ -17,7 +17,9 @@ Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
     calculatedFvPatchVectorField(p, iF),
     traction_(),
     pressure_(),
-    followerPressure_(true)
+    followerPressure_(true),
+    foundationStiffness_(0),
+    foundationDirection_(Zero)
 {}
 
 
@@ -31,8 +33,32 @@ Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
     calculatedFvPatchVectorField(p, iF, dict, false),
     traction_(),
     pressure_(),
-    followerPressure_(dict.lookupOrDefault<bool>("followerPressure", true))
+    followerPressure_(dict.lookupOrDefault<bool>("followerPressure", true)),
+    foundationStiffness_
+    (
+        dict.lookupOrDefault<scalar>("foundationStiffness", 0)
+    ),
+    foundationDirection_(Zero)
 {
+    if (foundationStiffness_ < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'foundationStiffness' in dictionary " << dict.name()
+            << " must be >= 0, got " << foundationStiffness_ << nl
+            << exit(FatalIOError);
+    }
+    if (foundationStiffness_ > 0)
+    {
+        foundationDirection_ = dict.get<vector>("foundationDirection");
+        if (mag(foundationDirection_) < SMALL)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword 'foundationDirection' in dictionary "
+                << dict.name() << " must be a non-zero vector" << nl
+                << exit(FatalIOError);
+        }
+        foundationDirection_ /= mag(foundationDirection_);
+    }
     if (dict.found("traction"))
     {
         traction_ = Function1<vector>::New("traction", dict);
@@ -73,7 +99,9 @@ Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
     calculatedFvPatchVectorField(ptf, p, iF, mapper),
     traction_(ptf.traction_.clone()),
     pressure_(ptf.pressure_.clone()),
-    followerPressure_(ptf.followerPressure_)
+    followerPressure_(ptf.followerPressure_),
+    foundationStiffness_(ptf.foundationStiffness_),
+    foundationDirection_(ptf.foundationDirection_)
 {}
 
 
@@ -86,7 +114,9 @@ Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
     solidForceBoundary(),
     traction_(ptf.traction_.clone()),
     pressure_(ptf.pressure_.clone()),
-    followerPressure_(ptf.followerPressure_)
+    followerPressure_(ptf.followerPressure_),
+    foundationStiffness_(ptf.foundationStiffness_),
+    foundationDirection_(ptf.foundationDirection_)
 {}
 
 
@@ -99,7 +129,9 @@ Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
     calculatedFvPatchVectorField(ptf, iF),
     traction_(ptf.traction_.clone()),
     pressure_(ptf.pressure_.clone()),
-    followerPressure_(ptf.followerPressure_)
+    followerPressure_(ptf.followerPressure_),
+    foundationStiffness_(ptf.foundationStiffness_),
+    foundationDirection_(ptf.foundationDirection_)
 {}
 
 
@@ -136,6 +168,49 @@ void Foam::solidTractionFvPatchVectorField::force
             f -= p*k.Sf0;
         }
     }
+
+    if (foundationStiffness_ > 0)
+    {
+        f -= mag(k.Sf0)*foundationTraction(k);
+    }
+}
+
+
+Foam::vector Foam::solidTractionFvPatchVectorField::foundationTraction
+(
+    const solidPatchKinematics& k
+) const
+{
+    // [S12] only the patch's mean displacement (its rigid translation) is
+    // resisted, so the foundation does not stiffen the wall's deformation
+    const scalarField magS(mag(k.Sf0));
+    const vector meanD(gSum(magS*k.D)/max(gSum(magS), VSMALL));
+    return foundationStiffness_*(sqr(foundationDirection_) & meanD);
+}
+
+
+bool Foam::solidTractionFvPatchVectorField::stiffness
+(
+    const solidPatchKinematics& k,
+    tensorField& K
+) const
+{
+    K = (foundationStiffness_*mag(k.Sf0))*tensor(sqr(foundationDirection_));
+    return foundationStiffness_ > 0;
+}
+
+
+void Foam::solidTractionFvPatchVectorField::report
+(
+    const solidPatchKinematics& k
+) const
+{
+    if (foundationStiffness_ > 0)
+    {
+        const vector F(-gSum(mag(k.Sf0))*foundationTraction(k));
+        Info<< "    foundation force on " << patch().name() << ": " << F
+            << " N" << endl;
+    }
 }
 
 
@@ -151,6 +226,11 @@ void Foam::solidTractionFvPatchVectorField::write(Ostream& os) const
         pressure_->writeData(os);
     }
     os.writeEntry("followerPressure", followerPressure_);
+    if (foundationStiffness_ > 0)
+    {
+        os.writeEntry("foundationStiffness", foundationStiffness_);
+        os.writeEntry("foundationDirection", foundationDirection_);
+    }
     writeEntry("value", os);
 }
 

@@ -180,7 +180,8 @@ Foam::newtonKrylov::result Foam::newtonKrylov::solve
     nResidualEvaluations_ = 0;
 
     Eigen::VectorXd R(x.size()), Rtrial(x.size()), dx(x.size());
-    Eigen::VectorXd xTrial(x.size());
+    Eigen::VectorXd xTrial(x.size()), xFull(x.size()), Rfull(x.size());
+    scalar normFull = GREAT;
 
     evaluate(sys, x, R);
     scalar normR = gNorm(R);
@@ -246,19 +247,38 @@ Foam::newtonKrylov::result Foam::newtonKrylov::solve
         res.krylovIterations += lastKrylov;
         ++res.newtonIterations;
 
-        // Backtracking line search on |R| (Armijo)
+        // Backtracking line search on |R| (Armijo). When no fraction of
+        // the step lowers |R| (an active-set change: faces closing into
+        // stiff contact make the residual jump before it falls), the full
+        // Newton step is taken: it is the linearisation's answer, and the
+        // next iteration linearises with the new active set [S14]
         scalar lambda = 1;
         scalar normTrial = GREAT;
+        bool decreased = false;
         for (label ls = 0; ls < 6; ++ls)
         {
             xTrial = x + lambda*dx;
             evaluate(sys, xTrial, Rtrial);
             normTrial = gFinite(Rtrial) ? gNorm(Rtrial) : GREAT;
+            if (ls == 0)
+            {
+                xFull = xTrial;
+                Rfull = Rtrial;
+                normFull = normTrial;
+            }
             if (normTrial <= (1 - 1e-4*lambda)*normR)
             {
+                decreased = true;
                 break;
             }
             lambda *= 0.5;
+        }
+        if (!decreased && normFull < GREAT)
+        {
+            lambda = 1;
+            xTrial = xFull;
+            Rtrial = Rfull;
+            normTrial = normFull;
         }
         if (normTrial >= GREAT)
         {

@@ -388,6 +388,31 @@ void Foam::totalLagrangianSolid::assemblePreconditioner
 }
 
 
+Foam::labelListList Foam::totalLagrangianSolid::residualInfluence() const
+{
+    // The face stress uses the gradients of the two cells it joins, each
+    // built from their face neighbours: two hops
+    const labelListList& cc = mesh_.cellCells();
+    labelListList influence(mesh_.nCells());
+    labelHashSet set(32);
+    forAll(cc, celli)
+    {
+        set.clear();
+        set.insert(celli);
+        for (const label n1 : cc[celli])
+        {
+            set.insert(n1);
+            for (const label n2 : cc[n1])
+            {
+                set.insert(n2);
+            }
+        }
+        influence[celli] = set.sortedToc();
+    }
+    return influence;
+}
+
+
 void Foam::totalLagrangianSolid::addVolumetricStiffness()
 {
     // [S16] K V_P b_Q b_R^T for every pair of cells Q, R in the
@@ -542,6 +567,7 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
     ),
     Jcell_(mesh.nCells(), 1),
     volumetricAveraging_(true),
+    volumetricAveragingWeight_(1),
     emptyProjector_(Zero),
     CpInv_(historyField(mesh, "CpInv", symmTensor::I, law_->plastic())),
     epsilonPf_(historyField(mesh, "epsilonPf", scalar(0), law_->plastic())),
@@ -556,6 +582,11 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
     (
         mesh.solutionDict().subDict("solid")
        .lookupOrDefault<label>("krylovRefresh", 15)
+    ),
+    preconditionerType_
+    (
+        mesh.solutionDict().subDict("solid")
+       .lookupOrDefault<word>("preconditioner", "fdJacobian")
     ),
     forceScale_(0),
     bodySize_(mag(mesh.bounds().span()))
@@ -593,6 +624,19 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
 
     volumetricAveraging_ =
         mechanicalProperties_.lookupOrDefault<bool>("volumetricAveraging", true);
+    volumetricAveragingWeight_ =
+        mechanicalProperties_.lookupOrDefault<scalar>
+        (
+            "volumetricAveragingWeight", 1
+        );
+    if (volumetricAveragingWeight_ < 0 || volumetricAveragingWeight_ > 1)
+    {
+        FatalIOErrorInFunction(mechanicalProperties_)
+            << "Keyword 'volumetricAveragingWeight' in "
+            << mechanicalProperties_.name() << " is "
+            << volumetricAveragingWeight_ << "; expected a value in [0, 1]"
+            << nl << exit(FatalIOError);
+    }
     for (direction d = 0; d < vector::nComponents; ++d)
     {
         if (mesh.solutionD()[d] != 1)
@@ -618,6 +662,25 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
     classifyPatches();
     computeGradientWeights();
 
+    if (preconditionerType_ == "fdJacobian")
+    {
+        fdJacobian_.reset
+        (
+            new finiteDifferenceJacobian(residualInfluence(), comps_.size())
+        );
+        Info<< "Preconditioner: finite-difference Jacobian, "
+            << returnReduce(fdJacobian_->nColours(), maxOp<label>())
+            << " colours" << endl;
+    }
+    else if (preconditionerType_ != "compact")
+    {
+        FatalIOErrorInFunction(mesh.solutionDict())
+            << "Keyword 'preconditioner' in dictionary "
+            << mesh.solutionDict().name() << "/solid is '"
+            << preconditionerType_ << "'; expected fdJacobian or compact"
+            << nl << exit(FatalIOError);
+    }
+
     // Plastic history at the faces of every patch the stress is evaluated on
     trialInternal_.setSize(mesh.nInternalFaces());
     trialPatch_.setSize(mesh.boundary().size());
@@ -627,8 +690,8 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
         trialPatch_[patchi].setSize(mesh.boundary()[patchi].size());
         if (patchKinds_[patchi] == FORCE)
         {
-            forcePatchD0_[patchi] =
-                D_.boundaryField()[patchi].patchInternalField();
+            // the written patch value is the face displacement (restart)
+            forcePatchD0_[patchi] = D_.boundaryField()[patchi];
         }
     }
 

@@ -307,6 +307,32 @@ void Foam::totalLagrangianSolid::updatePreconditioner
     const bool refresh =
         preconDeltaT_ < 0 || newtonIter == 0 || lastKrylov > krylovRefresh_;
 
+    if (fdJacobian_.valid())
+    {
+        if (refresh || !fdJacobian_->valid())
+        {
+            Eigen::VectorXd R;
+            residual(x, R);
+            const scalar h = 1e-7*max(gMaxNorm(x), typicalDisplacement());
+            if (!fdJacobian_->update(*this, x, R, h))
+            {
+                WarningInFunction
+                    << "Factorisation of the finite-difference Jacobian"
+                    << " failed; using the compact preconditioner" << endl;
+                fdJacobian_.clear();
+            }
+            else
+            {
+                preconDeltaT_ = mesh_.time().deltaTValue();
+                return;
+            }
+        }
+        else
+        {
+            return;
+        }
+    }
+
     if ((patchStiffness || law_->plastic()) && refresh)
     {
         unpack(x, Dwork_.primitiveFieldRef());
@@ -327,7 +353,14 @@ void Foam::totalLagrangianSolid::precondition
     Eigen::VectorXd& z
 ) const
 {
-    precon_.solve(r, z);
+    if (fdJacobian_.valid())
+    {
+        fdJacobian_->solve(r, z);
+    }
+    else
+    {
+        precon_.solve(r, z);
+    }
 }
 
 
