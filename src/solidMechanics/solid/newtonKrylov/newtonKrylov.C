@@ -19,6 +19,10 @@ Foam::newtonKrylov::newtonKrylov(const dictionary& dict)
     restart_(dict.lookupOrDefault<label>("krylovRestart", 40)),
     maxKrylov_(dict.lookupOrDefault<label>("maxKrylovIterations", 200)),
     verbose_(dict.lookupOrDefault<bool>("verbose", false)),
+    fullStepFallback_
+    (
+        dict.lookupOrDefault<bool>("fullStepFallback", false)
+    ),
     nResidualEvaluations_(0)
 {
     if (forceTol_ <= 0 || displacementTol_ <= 0 || maxNewton_ < 1
@@ -273,7 +277,7 @@ Foam::newtonKrylov::result Foam::newtonKrylov::solve
             }
             lambda *= 0.5;
         }
-        if (!decreased && normFull < GREAT)
+        if (!decreased && normFull < GREAT && fullStepFallback_)
         {
             lambda = 1;
             xTrial = xFull;
