@@ -93,8 +93,18 @@ int main(int argc, char *argv[])
 
         stepClock.timeIncrement();
         solid.beginStep(x, xStart, predictor);
-        const newtonKrylov::result res =
-            nonlinearSolver.solve(solid, x, xStart);
+        newtonKrylov::result res = nonlinearSolver.solve(solid, x, xStart);
+
+        // The time extrapolation misleads at a kink of the load path (a
+        // hold after a ramp): retry the same step from the last solution
+        if (!res.converged && predictor)
+        {
+            Info<< "    retrying the step without the predictor" << endl;
+            solid.beginStep(x, xStart, false);
+            const label nNewton = res.newtonIterations;
+            res = nonlinearSolver.solve(solid, x, xStart);
+            res.newtonIterations += nNewton;
+        }
 
         if (!res.converged)
         {

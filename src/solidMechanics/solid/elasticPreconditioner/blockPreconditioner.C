@@ -32,17 +32,7 @@ void Foam::blockPreconditioner::clear()
 
 void Foam::blockPreconditioner::addDiagonal(const label P, const tensor& K)
 {
-    const label nc = comps_.size();
-    for (label a = 0; a < nc; ++a)
-    {
-        for (label b = 0; b < nc; ++b)
-        {
-            entries_.emplace_back
-            (
-                P*nc + a, P*nc + b, K.component(3*comps_[a] + comps_[b])
-            );
-        }
-    }
+    addBlock(P, P, K);
 }
 
 
@@ -74,18 +64,10 @@ void Foam::blockPreconditioner::addCoupling
     const tensor& K
 )
 {
-    const label nc = comps_.size();
-    for (label a = 0; a < nc; ++a)
-    {
-        for (label b = 0; b < nc; ++b)
-        {
-            const scalar k = K.component(3*comps_[a] + comps_[b]);
-            entries_.emplace_back(P*nc + a, P*nc + b, k);
-            entries_.emplace_back(N*nc + a, N*nc + b, k);
-            entries_.emplace_back(P*nc + a, N*nc + b, -k);
-            entries_.emplace_back(N*nc + a, P*nc + b, -k);
-        }
-    }
+    addBlock(P, P, K);
+    addBlock(N, N, K);
+    addBlock(P, N, -K);
+    addBlock(N, P, -K);
 }
 
 
