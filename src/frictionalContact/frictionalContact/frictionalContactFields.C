@@ -142,10 +142,11 @@ void Foam::frictionalContactFvPatchVectorField::force
     frictionResult res;
     vector n;
     scalar area;
+    scalar gap;
     forAll(f, i)
     {
         label hint = hint_[i];
-        if (evaluateFace(i, k, res, n, area, hint))
+        if (evaluateFace(i, k, res, n, area, hint, gap))
         {
             // [C1] traction on the body: tN n - tT
             f[i] = area*(res.tN*n - res.tT);
@@ -168,10 +169,11 @@ bool Foam::frictionalContactFvPatchVectorField::stiffness
     frictionResult res;
     vector n;
     scalar area;
+    scalar gap;
     forAll(K, i)
     {
         label hint = hint_[i];
-        if (evaluateFace(i, k, res, n, area, hint) && res.tN > 0)
+        if (evaluateFace(i, k, res, n, area, hint, gap) && res.tN > 0)
         {
             const tensor P(tensor::I - sqr(n));
             K[i] = area*(res.dtNdgN*sqr(n) + (res.dtTdgT & P));
@@ -202,11 +204,12 @@ void Foam::frictionalContactFvPatchVectorField::commit
     frictionResult res;
     vector n;
     scalar area;
+    scalar gap;
 
     forAll(state_, i)
     {
         label hint = hint_[i];
-        if (evaluateFace(i, k, res, n, area, hint))
+        if (evaluateFace(i, k, res, n, area, hint, gap))
         {
             // [C7] dissipation: friction traction times plastic slip
             dissipation_[i] +=
@@ -215,7 +218,7 @@ void Foam::frictionalContactFvPatchVectorField::commit
             hint_[i] = hint;
             contactPressure_[i] = res.tN;
             frictionTraction_[i] = -res.tT;
-            penetration_[i] = res.tN/law().KN();
+            penetration_[i] = max(-gap, scalar(0));
 
             normalForce_ += area*res.tN*n;
             frictionForce_ -= area*res.tT;
@@ -226,7 +229,7 @@ void Foam::frictionalContactFvPatchVectorField::commit
                 {
                     ++nSlip_;
                 }
-                const scalar pen = res.tN/law().KN();
+                const scalar pen = max(-gap, scalar(0));
                 if (pen > maxPenetration_)
                 {
                     maxPenetration_ = pen;

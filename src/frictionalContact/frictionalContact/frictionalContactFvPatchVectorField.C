@@ -184,7 +184,8 @@ bool Foam::frictionalContactFvPatchVectorField::evaluateFace
     frictionResult& res,
     vector& gapNormal,
     scalar& area,
-    label& hint
+    label& hint,
+    scalar& gap
 ) const
 {
     const frictionState& old = state_[facei];
@@ -198,6 +199,7 @@ bool Foam::frictionalContactFvPatchVectorField::evaluateFace
     }
     hint = cp.hint;
     gapNormal = cp.n;
+    gap = cp.gap;
 
     // [C3] slip relative to the obstacle in the current tangent plane
     // (objective rate, L22): the face's motion over the step less that of
