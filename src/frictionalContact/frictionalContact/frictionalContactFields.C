@@ -12,6 +12,7 @@ Description
 #include "addToRunTimeSelectionTable.H"
 #include "volFields.H"
 #include "OFstream.H"
+#include "frictionStateEntries.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -72,29 +73,20 @@ void Foam::frictionalContactFvPatchVectorField::updateFields() const
             .boundaryFieldRef()[pi];
     };
 
-    scalarField& theta = scalarOut("contactAge", dimTime);
-    scalarField& alpha = scalarOut("lubricationWeight", dimless);
-    scalarField& rate = scalarOut("slipRate", dimVelocity);
-    scalarField& status = scalarOut("contactStatus", dimless);
-    scalarField& cumulated = scalarOut("cumulatedSlip", dimLength);
-    vectorField& slip = vectorOut("plasticSlip", dimLength);
-    scalarField& pressure = scalarOut("contactPressure", dimPressure);
-    vectorField& traction = vectorOut("frictionTraction", dimPressure);
-    scalarField& penetration = scalarOut("penetration", dimLength);
-    pressure = contactPressure_;
-    traction = frictionTraction_;
-    penetration = penetration_;
-
-    forAll(state_, i)
-    {
-        const frictionState& s = state_[i];
-        theta[i] = s.contactAge;
-        alpha[i] = s.lubricationWeight;
-        rate[i] = s.slipRate;
-        status[i] = s.status;
-        cumulated[i] = s.cumulatedSlip;
-        slip[i] = s.plasticSlip;
-    }
+    using namespace frictionStateEntries;
+    scalarOut("contactAge", dimTime) = member(state_, &frictionState::contactAge);
+    scalarOut("lubricationWeight", dimless) =
+        member(state_, &frictionState::lubricationWeight);
+    scalarOut("slipRate", dimVelocity) =
+        member(state_, &frictionState::slipRate);
+    scalarOut(statusKeyword, dimless) = status(state_);
+    scalarOut("cumulatedSlip", dimLength) =
+        member(state_, &frictionState::cumulatedSlip);
+    vectorOut("plasticSlip", dimLength) =
+        member(state_, &frictionState::plasticSlip);
+    scalarOut("contactPressure", dimPressure) = contactPressure_;
+    vectorOut("frictionTraction", dimPressure) = frictionTraction_;
+    scalarOut("penetration", dimLength) = penetration_;
 }
 
 
@@ -300,31 +292,16 @@ void Foam::frictionalContactFvPatchVectorField::write(Ostream& os) const
     os.writeEntry("contactSmoothing", contactSmoothing_);
 
     // Face state for restart
-    const label n = state_.size();
-    vectorField gT(n), gTp(n), tear(n);
-    scalarField gN(n), Dc(n), theta(n), alpha(n), rate(n), status(n);
-    forAll(state_, i)
+    using namespace frictionStateEntries;
+    for (const auto& e : vectors)
     {
-        const frictionState& s = state_[i];
-        gT[i] = s.totalSlip;
-        gTp[i] = s.plasticSlip;
-        tear[i] = s.tearSlip;
-        gN[i] = s.normalSlip;
-        Dc[i] = s.cumulatedSlip;
-        theta[i] = s.contactAge;
-        alpha[i] = s.lubricationWeight;
-        rate[i] = s.slipRate;
-        status[i] = s.status;
+        member(state_, e.second)().writeEntry(e.first, os);
     }
-    gT.writeEntry("totalSlip", os);
-    gTp.writeEntry("plasticSlip", os);
-    tear.writeEntry("tearSlip", os);
-    gN.writeEntry("normalSlip", os);
-    Dc.writeEntry("cumulatedSlip", os);
-    theta.writeEntry("contactAge", os);
-    alpha.writeEntry("lubricationWeight", os);
-    rate.writeEntry("slipRate", os);
-    status.writeEntry("contactStatus", os);
+    for (const auto& e : scalars)
+    {
+        member(state_, e.second)().writeEntry(e.first, os);
+    }
+    status(state_)().writeEntry(statusKeyword, os);
     dissipation_.writeEntry("dissipatedEnergy", os);
     writeEntry("value", os);
 }

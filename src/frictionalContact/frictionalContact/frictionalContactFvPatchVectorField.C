@@ -8,6 +8,7 @@ License
 #include "wallFvPatch.H"
 #include "volFields.H"
 #include "IOdictionary.H"
+#include "frictionStateEntries.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -144,30 +145,22 @@ void Foam::frictionalContactFvPatchVectorField::readState
     penetration_.setSize(n, 0);
     dissipation_.setSize(n, 0);
 
-    // Restart: the state written by write() below
-    if (dict.found("totalSlip"))
+    // Restart: the state written by write()
+    using namespace frictionStateEntries;
+    if (dict.found(vectors[0].first))
     {
-        const vectorField gT("totalSlip", dict, n);
-        const vectorField gTp("plasticSlip", dict, n);
-        const vectorField tear("tearSlip", dict, n);
-        const scalarField gN("normalSlip", dict, n);
-        const scalarField Dc("cumulatedSlip", dict, n);
-        const scalarField theta("contactAge", dict, n);
-        const scalarField alpha("lubricationWeight", dict, n);
-        const scalarField rate("slipRate", dict, n);
-        const scalarField status("contactStatus", dict, n);
+        for (const auto& e : vectors)
+        {
+            setMember(state_, e.second, vectorField(e.first, dict, n));
+        }
+        for (const auto& e : scalars)
+        {
+            setMember(state_, e.second, scalarField(e.first, dict, n));
+        }
+        const scalarField status(statusKeyword, dict, n);
         forAll(state_, i)
         {
-            frictionState& s = state_[i];
-            s.totalSlip = gT[i];
-            s.plasticSlip = gTp[i];
-            s.tearSlip = tear[i];
-            s.normalSlip = gN[i];
-            s.cumulatedSlip = Dc[i];
-            s.contactAge = theta[i];
-            s.lubricationWeight = alpha[i];
-            s.slipRate = rate[i];
-            s.status = label(status[i] + 0.5);
+            state_[i].status = label(status[i] + 0.5);
         }
     }
     if (dict.found("dissipatedEnergy"))
