@@ -85,6 +85,8 @@ void Foam::frictionalContactFvPatchVectorField::updateFields() const
     vectorOut("plasticSlip", dimLength) =
         member(state_, &frictionState::plasticSlip);
     scalarOut("contactPressure", dimPressure) = contactPressure_;
+    scalarOut("nominalContactPressure", dimPressure) =
+        nominalContactPressure_;
     vectorOut("frictionTraction", dimPressure) = frictionTraction_;
     scalarOut("penetration", dimLength) = penetration_;
 }
@@ -137,8 +139,7 @@ void Foam::frictionalContactFvPatchVectorField::force
     scalar gap;
     forAll(f, i)
     {
-        label hint = hint_[i];
-        if (evaluateFace(i, k, res, n, area, hint, gap))
+        if (evaluateFace(i, k, res, n, area, gap))
         {
             // [C1] traction on the body: tN n - tT
             f[i] = area*(res.tN*n - res.tT);
@@ -164,8 +165,7 @@ bool Foam::frictionalContactFvPatchVectorField::stiffness
     scalar gap;
     forAll(K, i)
     {
-        label hint = hint_[i];
-        if (evaluateFace(i, k, res, n, area, hint, gap) && res.tN > 0)
+        if (evaluateFace(i, k, res, n, area, gap) && res.tN > 0)
         {
             const tensor P(tensor::I - sqr(n));
             K[i] = area*(res.dtNdgN*sqr(n) + (res.dtTdgT & P));
@@ -200,15 +200,14 @@ void Foam::frictionalContactFvPatchVectorField::commit
 
     forAll(state_, i)
     {
-        label hint = hint_[i];
-        if (evaluateFace(i, k, res, n, area, hint, gap))
+        if (evaluateFace(i, k, res, n, area, gap))
         {
             // [C7] dissipation: friction traction times plastic slip
             dissipation_[i] +=
                 area*(res.tT & (res.state.plasticSlip - state_[i].plasticSlip));
             state_[i] = res.state;
-            hint_[i] = hint;
             contactPressure_[i] = res.tN;
+            nominalContactPressure_[i] = res.tN*area/mag(k.Sf0[i]);
             frictionTraction_[i] = -res.tT;
             penetration_[i] = max(-gap, scalar(0));
 
@@ -235,8 +234,8 @@ void Foam::frictionalContactFvPatchVectorField::commit
             frictionState s(law().initialState());
             s.cumulatedSlip = state_[i].cumulatedSlip;
             state_[i] = s;
-            hint_[i] = -1;
             contactPressure_[i] = 0;
+            nominalContactPressure_[i] = 0;
             frictionTraction_[i] = Zero;
             penetration_[i] = 0;
         }
@@ -278,6 +277,20 @@ void Foam::frictionalContactFvPatchVectorField::report
         << " N, dissipated " << totalDissipation_ << " J, largest"
         << " penetration " << maxPenetration_ << " m at "
         << maxPenetrationAt_ << endl;
+
+    // [C2c] obstacle searches since the last report (this step and any
+    // cut-back attempts before it)
+    const labelPair n
+    (
+        returnReduce(obstacle_->searchCounts().first(), sumOp<label>()),
+        returnReduce(obstacle_->searchCounts().second(), sumOp<label>())
+    );
+    if (n.first() + n.second() > 0)
+    {
+        Info<< "    contact " << patch().name() << ": obstacle searches "
+            << n.first() << ", re-projections " << n.second() << endl;
+    }
+    obstacle_->resetSearchCounts();
 }
 
 
@@ -290,6 +303,7 @@ void Foam::frictionalContactFvPatchVectorField::write(Ostream& os) const
     os.writeEntry("tangentialPenaltyScale", tangentialPenaltyScale_);
     os.writeEntry("searchDistance", searchDistance_);
     os.writeEntry("contactSmoothing", contactSmoothing_);
+    os.writeEntry("searchRefreshFraction", searchRefreshFraction_);
 
     // Face state for restart
     using namespace frictionStateEntries;

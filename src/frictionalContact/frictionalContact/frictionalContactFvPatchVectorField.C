@@ -84,9 +84,11 @@ void Foam::frictionalContactFvPatchVectorField::copyFrom
     tangentialPenaltyScale_ = ptf.tangentialPenaltyScale_;
     searchDistance_ = ptf.searchDistance_;
     contactSmoothing_ = ptf.contactSmoothing_;
+    searchRefreshFraction_ = ptf.searchRefreshFraction_;
     state_ = ptf.state_;
-    hint_ = ptf.hint_;
+    search_ = ptf.search_;
     contactPressure_ = ptf.contactPressure_;
+    nominalContactPressure_ = ptf.nominalContactPressure_;
     frictionTraction_ = ptf.frictionTraction_;
     penetration_ = ptf.penetration_;
     normalForce_ = ptf.normalForce_;
@@ -122,8 +124,9 @@ void Foam::frictionalContactFvPatchVectorField::copyFace
         return;
     }
     state_[to] = ptf.state_[from];
-    hint_[to] = -1;
+    search_[to] = obstacleSearch();
     contactPressure_[to] = ptf.contactPressure_[from];
+    nominalContactPressure_[to] = ptf.nominalContactPressure_[from];
     frictionTraction_[to] = ptf.frictionTraction_[from];
     penetration_[to] = ptf.penetration_[from];
     dissipation_[to] = ptf.dissipation_[from];
@@ -139,8 +142,9 @@ void Foam::frictionalContactFvPatchVectorField::readState
     const frictionState fresh =
         law_.valid() ? law_->initialState() : frictionState();
     state_.setSize(n, fresh);
-    hint_.setSize(n, -1);
+    search_.setSize(n, obstacleSearch());
     contactPressure_.setSize(n, 0);
+    nominalContactPressure_.setSize(n, 0);
     frictionTraction_.setSize(n, Zero);
     penetration_.setSize(n, 0);
     dissipation_.setSize(n, 0);
@@ -177,20 +181,29 @@ bool Foam::frictionalContactFvPatchVectorField::evaluateFace
     frictionResult& res,
     vector& gapNormal,
     scalar& area,
-    label& hint,
     scalar& gap
 ) const
 {
     const frictionState& old = state_[facei];
 
-    // [C2] geometry: deformed face centre against the obstacle
+    // [C2] geometry: deformed face centre against the obstacle, the search
+    // reused while the face moves less than a fraction of its cell [C2c]
     const point x(k.Cf0[facei] + k.D[facei]);
+    const scalar cellDepth =
+        patch().boundaryMesh().mesh().V()[patch().faceCells()[facei]]
+       /mag(k.Sf0[facei]);
     obstaclePoint cp;
-    if (!obstacle_->nearest(x, k.time, searchDistance_, cp, hint))
+    if
+    (
+        !obstacle_->nearest
+        (
+            x, k.time, searchDistance_, searchRefreshFraction_*cellDepth,
+            cp, search_[facei]
+        )
+    )
     {
         return false;
     }
-    hint = cp.hint;
     gapNormal = cp.n;
     gap = cp.gap;
 
@@ -233,6 +246,7 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     tangentialPenaltyScale_(0.1),
     searchDistance_(GREAT),
     contactSmoothing_(0),
+    searchRefreshFraction_(0.2),
     normalForce_(Zero),
     frictionForce_(Zero),
     totalDissipation_(0),
@@ -260,6 +274,10 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     ),
     searchDistance_(-1),
     contactSmoothing_(0),
+    searchRefreshFraction_
+    (
+        dict.lookupOrDefault<scalar>("searchRefreshFraction", 0.2)
+    ),
     normalForce_(Zero),
     frictionForce_(Zero),
     totalDissipation_(0),
@@ -306,6 +324,13 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
             << " must be >= 0, got " << contactSmoothing_ << nl
             << exit(FatalIOError);
     }
+    if (searchRefreshFraction_ < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'searchRefreshFraction' in dictionary " << dict.name()
+            << " must be >= 0 (0: a full search at every evaluation), got "
+            << searchRefreshFraction_ << nl << exit(FatalIOError);
+    }
     if (!(searchDistance_ > 0))
     {
         FatalIOErrorInFunction(dict)
@@ -349,6 +374,7 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     tangentialPenaltyScale_(ptf.tangentialPenaltyScale_),
     searchDistance_(ptf.searchDistance_),
     contactSmoothing_(ptf.contactSmoothing_),
+    searchRefreshFraction_(ptf.searchRefreshFraction_),
     normalForce_(Zero),
     frictionForce_(Zero),
     totalDissipation_(0),
@@ -368,8 +394,9 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
 
     const label n = mapper.size();
     state_.setSize(n);
-    hint_.setSize(n, -1);
+    search_.setSize(n, obstacleSearch());
     contactPressure_.setSize(n, 0);
+    nominalContactPressure_.setSize(n, 0);
     frictionTraction_.setSize(n, Zero);
     penetration_.setSize(n, 0);
     dissipation_.setSize(n, 0);
@@ -426,8 +453,9 @@ void Foam::frictionalContactFvPatchVectorField::autoMap
     const frictionalContactFvPatchVectorField old(*this);
     const label n = m.size();
     state_.setSize(n);
-    hint_.setSize(n, -1);
+    search_.setSize(n, obstacleSearch());
     contactPressure_.setSize(n, 0);
+    nominalContactPressure_.setSize(n, 0);
     frictionTraction_.setSize(n, Zero);
     penetration_.setSize(n, 0);
     dissipation_.setSize(n, 0);

@@ -73,7 +73,9 @@ Foam::rigidObstacle::rigidObstacle(const dictionary& dict)
     translation_(),
     rotationAxis_(0, 0, 1),
     rotationOrigin_(dict.getOrDefault<point>("rotationOrigin", Zero)),
-    rotationAngle_()
+    rotationAngle_(),
+    nFullSearches_(0),
+    nReprojections_(0)
 {
     if (dict.found("translation"))
     {
@@ -194,6 +196,76 @@ bool Foam::rigidObstacle::nearest
 
     // Distances and hence the gap are invariant under the rigid motion
     cp.p = (R & (cp0.p - rotationOrigin_)) + rotationOrigin_ + T;
+    cp.n = R & cp0.n;
+    cp.gap = cp0.gap;
+    cp.hint = cp0.hint;
+
+    return true;
+}
+
+
+bool Foam::rigidObstacle::nearest
+(
+    const point& x,
+    const scalar t,
+    const scalar maxDistance,
+    const scalar refreshDistance,
+    obstaclePoint& cp,
+    obstacleSearch& search
+) const
+{
+    if (!reusesSearches())
+    {
+        return nearest(x, t, maxDistance, cp);
+    }
+
+    const point x0 = toInitial(x, t);
+    obstaclePoint cp0;
+
+    if
+    (
+        search.searched
+     && magSqr(x0 - search.x0) < sqr(refreshDistance)
+    )
+    {
+        // [C2c] moved less than refreshDistance since the full search: a
+        // miss then (nothing within maxDistance + refreshDistance) is a
+        // miss now; a hit is re-projected from the triangle followed
+        ++nReprojections_;
+        if (!search.hit)
+        {
+            return false;
+        }
+        if (!nearestLocal(x0, maxDistance, cp0, search.hint))
+        {
+            return false;
+        }
+    }
+    else
+    {
+        ++nFullSearches_;
+        search.searched = true;
+        search.x0 = x0;
+        search.hit =
+            nearestInitial(x0, maxDistance + refreshDistance, cp0, -1);
+        search.hint = search.hit ? cp0.hint : -1;
+        // the type's own reach criterion, from the triangle just found
+        if (!search.hit || !nearestLocal(x0, maxDistance, cp0, cp0.hint))
+        {
+            return false;
+        }
+    }
+    search.hint = cp0.hint;
+
+    if (!moving())
+    {
+        cp = cp0;
+        return true;
+    }
+
+    // Distances and hence the gap are invariant under the rigid motion
+    const tensor R(rotation(t));
+    cp.p = (R & (cp0.p - rotationOrigin_)) + rotationOrigin_ + translation(t);
     cp.n = R & cp0.n;
     cp.gap = cp0.gap;
     cp.hint = cp0.hint;

@@ -19,6 +19,10 @@ Description
         'nearest' and within the facet angle 2 pi/720 for 'face' (where p
         is a vertex the octree may report either facet);
         the hinted search gives bit-identical results to the octree;
+        the search record (rigidObstacle::nearest with obstacleSearch,
+        doc/theory.md [C2c]) gives bit-identical results to the octree
+        along a path of short and long moves, keeps a miss without a
+        search and uses the extended reach;
         flipNormals; maxDistance; a quarter circle continued by its
         tangent line in one long facet (the pear die's flank): the normal
         along the line within 1e-3 rad of the line's;
@@ -446,6 +450,110 @@ int main()
             "translated surface: gap R - |x - c|", cp.gap, 0.5*R + 0.001,
             gapTol
         );
+
+        // Search record [C2c]: a point circling inside the die in steps of
+        // 0.01 to 3.3 facets, re-projected while it stays within the
+        // refresh distance of its last full search: 0.2 facet widths (most
+        // steps are re-projections) and 5 facet widths (the long steps are
+        // walks over several facets); every result bit-identical to the
+        // octree's
+        {
+            const scalar facet = twoPi*R/nFacets;
+            const scalar refresh = 0.2*facet;
+            for (const scalar refreshFacets : {0.2, 5.0})
+            {
+                obstacleSearch record;
+                die->resetSearchCounts();
+                scalar maxDiff = 0;
+                bool sameFound = true;
+                scalar theta = 0.0123;
+                for (label k = 0; k < 400; ++k)
+                {
+                    theta += (k % 7 == 6 ? 3.3 : 0.01)*twoPi/nFacets;
+                    const scalar r = (k % 2 ? 0.999 : 1.0002)*R;
+                    const point x
+                    (
+                        r*Foam::cos(theta), r*Foam::sin(theta), 5e-4
+                    );
+                    obstaclePoint cpRec, cpFull;
+                    const bool found = die->nearest
+                    (
+                        x, 0, 0.01, refreshFacets*facet, cpRec, record
+                    );
+                    sameFound =
+                        sameFound
+                     && found == triDie.nearestFullSearch(x, 0.01, cpFull);
+                    maxDiff = max
+                    (
+                        maxDiff,
+                        mag(cpRec.p - cpFull.p) + mag(cpRec.n - cpFull.n)
+                      + mag(cpRec.gap - cpFull.gap)
+                    );
+                }
+                const labelPair n = die->searchCounts();
+                const word tag("record (" + Foam::name(refreshFacets) + "): ");
+                Info<< "    " << tag << n.first() << " full searches, "
+                    << n.second() << " re-projections" << endl;
+                unitTest::checkTrue(tag + "found as the octree", sameFound);
+                unitTest::checkAbs
+                (
+                    tag + "difference to the octree", maxDiff, 0, 0
+                );
+                unitTest::checkTrue
+                (
+                    tag + "mostly re-projections",
+                    n.second() > 4*n.first() && n.first() > 0
+                );
+            }
+
+            // Reach: nothing within maxDistance + refresh stays a miss
+            // without a search while the point moves less than refresh; a
+            // point just beyond maxDistance becomes in reach by moving
+            // (extended reach of the recorded search)
+            const scalar maxDist = 0.4*R;
+            obstacleSearch far;
+            die->resetSearchCounts();
+            obstaclePoint untouched;
+            untouched.gap = 123;
+            const bool miss1 = !die->nearest
+            (
+                point(0.5*R, 0, 5e-4), 0, maxDist, refresh, untouched, far
+            );
+            const bool miss2 = !die->nearest
+            (
+                point(0.5*R + 0.5*refresh, 0, 5e-4), 0, maxDist, refresh,
+                untouched, far
+            );
+            unitTest::checkTrue
+            (
+                "record: a miss stays a miss without a search",
+                miss1 && miss2 && untouched.gap == 123
+             && die->searchCounts() == labelPair(1, 1)
+            );
+
+            obstacleSearch edge;
+            const scalar d0 = maxDist + 0.5*refresh;
+            obstaclePoint cpEdge;
+            const bool beyond = !die->nearest
+            (
+                point(R - d0, 0, 5e-4), 0, maxDist, refresh, cpEdge, edge
+            );
+            const bool inReach = die->nearest
+            (
+                point(R - d0 + 0.6*refresh, 0, 5e-4), 0, maxDist, refresh,
+                cpEdge, edge
+            );
+            unitTest::checkTrue
+            (
+                "record: beyond maxDistance, then in reach after a short move",
+                beyond && inReach
+            );
+            unitTest::checkAbs
+            (
+                "record: gap after the short move", cpEdge.gap,
+                d0 - 0.6*refresh, gapTol
+            );
+        }
     }
 
     Info<< "triSurface: arc and tangent line (smooth normal at the join)"

@@ -237,6 +237,61 @@ Foam::label Foam::rigidObstacles::triSurfaceObstacle::hintedNearest
 }
 
 
+Foam::label Foam::rigidObstacles::triSurfaceObstacle::walkNearest
+(
+    const point& x0,
+    const label f,
+    const label maxMoves
+) const
+{
+    const pointField& pts = surface_.localPoints();
+    const List<labelledTri>& faces = surface_.localFaces();
+    const labelListList& pointFaces = surface_.pointFaces();
+
+    auto distance = [&](const label g)
+    {
+        const labelledTri& tri = faces[g];
+        return
+            triPointRef(pts[tri[0]], pts[tri[1]], pts[tri[2]])
+           .nearestPoint(x0).distance();
+    };
+
+    label current = f;
+    scalar currentDist = distance(f);
+
+    for (label move = 0; move <= maxMoves; ++move)
+    {
+        // every triangle touching the current one, so also every triangle
+        // holding its nearest point, whether inside, on an edge or a vertex
+        label best = current;
+        scalar bestDist = currentDist;
+        for (const label pointi : faces[current])
+        {
+            for (const label g : pointFaces[pointi])
+            {
+                if (g != current)
+                {
+                    const scalar d = distance(g);
+                    if (d < bestDist)
+                    {
+                        best = g;
+                        bestDist = d;
+                    }
+                }
+            }
+        }
+        if (best == current)
+        {
+            return current;
+        }
+        current = best;
+        currentDist = bestDist;
+    }
+
+    return -1;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::rigidObstacles::triSurfaceObstacle::triSurfaceObstacle
@@ -261,8 +316,11 @@ Foam::rigidObstacles::triSurfaceObstacle::triSurfaceObstacle
 {
     calcNormals(dict.getOrDefault<bool>("flipNormals", false));
 
-    // Build the octree now: queries are then read-only
+    // Build the octree and the addressing now: queries are then read-only
     search_.tree();
+    surface_.pointFaces();
+    surface_.faceEdges();
+    surface_.edgeFaces();
 }
 
 
@@ -305,6 +363,35 @@ bool Foam::rigidObstacles::triSurfaceObstacle::nearestInitial
     }
 
     return nearestFullSearch(x0, maxDistance, cp);
+}
+
+
+bool Foam::rigidObstacles::triSurfaceObstacle::nearestLocal
+(
+    const point& x0,
+    const scalar maxDistance,
+    obstaclePoint& cp,
+    const label hint
+) const
+{
+    if (hint < 0 || hint >= surface_.size())
+    {
+        return nearestFullSearch(x0, maxDistance, cp);
+    }
+
+    label f = hintedNearest(x0, maxDistance, hint);
+
+    if (f < 0)
+    {
+        f = walkNearest(x0, hint, 100);
+        if (f < 0)
+        {
+            return nearestFullSearch(x0, maxDistance, cp);
+        }
+    }
+
+    evaluate(f, x0, cp);
+    return mag(x0 - cp.p) <= maxDistance;
 }
 
 
