@@ -14,9 +14,11 @@
 # deformed face centre, and under p0 the surface is shortened by the
 # tangential strain (1 + nu)(1 - 2 nu) p0/E (0.9 % here), which would show
 # as a 0.9 % higher p0 and a 0.7 % smaller a at any mesh. The comparison is
-# therefore made where the linear theory is posed and where linearElastic
-# is exactly linear: the force per reference area (nominalContactPressure,
-# doc/theory.md [C4]) at the undeformed face centre (README).
+# therefore made where the linear theory is posed, and where the solid with
+# linearElastic (Hooke's law of the reference displacement gradient) and
+# the flat obstacle's gap are linear: the force per reference area
+# (nominalContactPressure, doc/theory.md [C4]) at the undeformed face
+# centre (README).
 import math
 import os
 import sys
