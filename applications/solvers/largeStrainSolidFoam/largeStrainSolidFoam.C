@@ -80,11 +80,17 @@ int main(int argc, char *argv[])
     while (runTime.value() < runTime.endTime().value() - 1e-9*userDeltaT)
     {
         const scalar t0 = runTime.value();
-        const label index0 = runTime.timeIndex();
 
+        // A rejected step must not advance Time's write index (else the
+        // retried step skips its write time and adjustableRunTime aims at
+        // the next one): the whole time state is restored on a cut-back
+        const TimeState lastConverged(runTime);
+
+        // Take the rest of the run in one step rather than leave a sliver
+        const scalar remaining = runTime.endTime().value() - t0;
         runTime.setDeltaT
         (
-            min(deltaT, runTime.endTime().value() - t0)
+            remaining < (1 + 1e-3)*deltaT ? remaining : deltaT
         );
         ++runTime;
 
@@ -119,7 +125,7 @@ int main(int argc, char *argv[])
             if (++nCutBacks > maxCutBacks || tooSmall)
             {
                 // Keep the last converged state on disk
-                runTime.setTime(t0, index0);
+                runTime.TimeState::operator=(lastConverged);
                 if (t0 > runTime.startTime().value())
                 {
                     solid.prepareWrite();
@@ -138,8 +144,8 @@ int main(int argc, char *argv[])
                     << exit(FatalError);
             }
 
-            runTime.setTime(t0, index0);
             deltaT = cutBackFactor*runTime.deltaTValue();
+            runTime.TimeState::operator=(lastConverged);
             Info<< "    cutting the time step back to " << deltaT
                 << " s and retrying (" << nCutBacks << " of " << maxCutBacks
                 << ")" << nl << endl;

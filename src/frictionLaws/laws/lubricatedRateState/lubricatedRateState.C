@@ -38,6 +38,7 @@ Foam::frictionLaws::lubricatedRateState::lubricatedRateState
     muD_(0),
     vc_(1),
     etaB_(frictionParameters::nonNegative(dict, "filmViscosity")),
+    steadyFreshContact_(false),
     lubrication_(lubricationWeightModel::New(dict.subDict("lubrication")))
 {
     if (dict.found("mu0"))
@@ -49,6 +50,18 @@ Foam::frictionLaws::lubricatedRateState::lubricatedRateState
         muS_ = frictionParameters::nonNegative(dict, "muStatic");
         muD_ = frictionParameters::nonNegative(dict, "muDynamic");
         vc_ = frictionParameters::positive(dict, "criticalVelocity");
+    }
+
+    const word fresh(dict.getOrDefault<word>("freshContactAge", "creep"));
+    if (fresh == "steadySliding")
+    {
+        steadyFreshContact_ = true;
+    }
+    else if (fresh != "creep")
+    {
+        FatalIOErrorInFunction(dict)
+            << "keyword 'freshContactAge' must be creep or steadySliding,"
+            << " got '" << fresh << "'" << exit(FatalIOError);
     }
 
     scalarList range
@@ -181,13 +194,26 @@ void Foam::frictionLaws::lubricatedRateState::update
     const scalar v = mag(vv);
     const vector vHat = v > 0 ? vv/v : vector::zero;
 
+    const scalar veff2 = v*v + Vs_*Vs_;
+
+    // Age at the start of the step: a face closing now starts in steady
+    // sliding at its first slip rate with steadySliding [F17b]
+    scalar theta0 = old.contactAge;
+    scalar dtheta0dv = 0;
+    if (steadyFreshContact_ && old.status == frictionState::OPEN)
+    {
+        const scalar veff = std::sqrt(veff2);
+        theta0 = D0_/veff;
+        dtheta0dv = -theta0*v/veff2;
+    }
+
     // Exact contact-age update at |v| (L22) [F13]
     scalar theta1, dthetadx;
-    relaxationStep(old.contactAge, v*dt/D0_, dt, theta1, dthetadx);
-    const scalar dthetadv = dthetadx*dt/D0_;
+    const scalar x = v*dt/D0_;
+    relaxationStep(theta0, x, dt, theta1, dthetadx);
+    const scalar dthetadv = dthetadx*dt/D0_ + std::exp(-x)*dtheta0dv;
 
     // Ageing factor (L23, L26) [F17] and mu0 (L24) [F18]
-    const scalar veff2 = v*v + Vs_*Vs_;
     const scalar fRaw = 1 + 0.5*M_*std::log(theta1*theta1*veff2/(D0_*D0_));
     const scalar fv = max(fRaw, 0);
     const scalar dfdv = fRaw > 0 ? M_*(dthetadv/theta1 + v/veff2) : 0;

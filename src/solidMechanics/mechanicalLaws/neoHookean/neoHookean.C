@@ -31,13 +31,11 @@ Foam::tensor Foam::mechanicalLaws::neoHookean::stress
 {
     updated = old;
 
-    const scalar J = det(F);
-    if (J <= 0)
+    if (!admissible(F))
     {
-        // Inverted element: an infinite stress makes the Newton solver's
-        // line search and cut-back reject the step
-        return tensor::one*GREAT;
+        return rejectedStress();
     }
+    const scalar J = det(F);
 
     // [S4]
     const tensor FinvT(inv(F).T());

@@ -120,16 +120,20 @@ Foam::tensor Foam::mechanicalLaws::vonMisesPlastic::stress
     materialState& updated
 ) const
 {
-    const scalar J = det(F);
-    if (J <= 0)
+    if (!admissible(F))
     {
         updated = old;
-        return tensor::one*GREAT;
+        return rejectedStress();
     }
 
     // [S6] elastic predictor: trial left Cauchy-Green be = F Cp^-1 F^T
     const symmTensor beTrial(symm(F & old.CpInv & F.T()));
     const symmetricEigen eig(beTrial);
+    if (!(cmptMin(eig.values) > 0))
+    {
+        updated = old;
+        return rejectedStress();
+    }
 
     // Principal logarithmic elastic strains
     vector eps
@@ -197,13 +201,17 @@ Foam::tensor Foam::mechanicalLaws::vonMisesPlastic::acousticTensor
 {
     const tensor elastic(mechanicalLaw::acousticTensor(F, old, n));
 
-    if (det(F) <= 0)
+    if (!admissible(F))
     {
         return elastic;
     }
 
     const symmTensor beTrial(symm(F & old.CpInv & F.T()));
     const symmetricEigen eig(beTrial);
+    if (!(cmptMin(eig.values) > 0))
+    {
+        return elastic;
+    }
     const vector eps
     (
         0.5*Foam::log(eig.values.x()),
