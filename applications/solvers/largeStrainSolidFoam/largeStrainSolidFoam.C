@@ -132,9 +132,11 @@ int main(int argc, char *argv[])
                     runTime.writeNow();
                 }
 
+                // nCutBacks counts the failed attempts: one more than the
+                // cut-backs made
                 FatalErrorInFunction
                     << "The step to time " << failedTime
-                    << " did not converge after " << nCutBacks
+                    << " did not converge after " << nCutBacks - 1
                     << " cut-backs of the time step (last deltaT "
                     << runTime.deltaTValue() << " s, reason: " << res.reason
                     << ")." << nl

@@ -100,7 +100,7 @@ Foam::triSurface Foam::rigidObstacles::triSurfaceObstacle::readSurface
 }
 
 
-void Foam::rigidObstacles::triSurfaceObstacle::evaluate
+bool Foam::rigidObstacles::triSurfaceObstacle::evaluate
 (
     const label f,
     const point& x0,
@@ -118,9 +118,12 @@ void Foam::rigidObstacles::triSurfaceObstacle::evaluate
     const vector d = x0 - p;
     const scalar dist = mag(d);
 
-    // Pseudo-normal of the nearest feature, and whether it is sharp
+    // Pseudo-normal of the nearest feature, whether it is sharp and
+    // whether it lies on an open boundary (edges from nInternalEdges() on
+    // have one triangle)
     vector pseudo = faceNormals_[f];
     bool sharp = false;
+    bool openBoundary = false;
 
     if (nearType == triPointRef::EDGE)
     {
@@ -135,6 +138,7 @@ void Foam::rigidObstacles::triSurfaceObstacle::evaluate
                     pseudo += faceNormals_[g];
                 }
                 sharp = sharpEdge_[edgei];
+                openBoundary = edgei >= surface_.nInternalEdges();
                 break;
             }
         }
@@ -143,6 +147,26 @@ void Foam::rigidObstacles::triSurfaceObstacle::evaluate
     {
         pseudo = pointNormals_[tri[nearLabel]];
         sharp = sharpPoint_[tri[nearLabel]];
+        for (const label edgei : surface_.pointEdges()[tri[nearLabel]])
+        {
+            openBoundary =
+                openBoundary || edgei >= surface_.nInternalEdges();
+        }
+    }
+
+    // Behind an open boundary (beyond the edge of a strip, on its back
+    // side) there is no obstacle: out of reach. The sign rule below would
+    // make such a point penetrate by its whole distance to the edge, a gap
+    // that jumps from +|d| to -|d| as the point crosses the plane of the
+    // end triangle, and traps faces sliding off the strip onto its edge
+    if (openBoundary && (d & pseudo) < 0)
+    {
+        const scalar m = mag(pseudo);
+        const vector dT(m > VSMALL ? d - (d & pseudo)*pseudo/sqr(m) : d);
+        if (mag(dT) > smallDistance_)
+        {
+            return false;
+        }
     }
 
     vector n = faceNormals_[f];
@@ -179,6 +203,7 @@ void Foam::rigidObstacles::triSurfaceObstacle::evaluate
     cp.n = n;
     cp.gap = d & n;
     cp.hint = f;
+    return true;
 }
 
 
@@ -341,8 +366,7 @@ bool Foam::rigidObstacles::triSurfaceObstacle::nearestFullSearch
         return false;
     }
 
-    evaluate(hit.index(), x0, cp);
-    return true;
+    return evaluate(hit.index(), x0, cp);
 }
 
 
@@ -358,8 +382,7 @@ bool Foam::rigidObstacles::triSurfaceObstacle::nearestInitial
 
     if (f >= 0)
     {
-        evaluate(f, x0, cp);
-        return true;
+        return evaluate(f, x0, cp);
     }
 
     return nearestFullSearch(x0, maxDistance, cp);

@@ -589,6 +589,7 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
        .lookupOrDefault<word>("preconditioner", "fdJacobian")
     ),
     forceScale_(0),
+    forceFloor_(0),
     bodySize_(mag(mesh.bounds().span()))
 {
     const word d2dt2
@@ -661,6 +662,31 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
 
     classifyPatches();
     computeGradientWeights();
+
+    // [S14] force-scale floor: the face-force magnitudes each cell would
+    // balance under a uniform stress of E x 1e-6, summed as in residual()
+    {
+        const scalar sigma = 1e-6*law_->E();
+        scalarField fMag(mesh.nCells(), Zero);
+        const scalarField& magSf = mesh.magSf();
+        forAll(mesh.owner(), facei)
+        {
+            fMag[mesh.owner()[facei]] += sigma*magSf[facei];
+            fMag[mesh.neighbour()[facei]] += sigma*magSf[facei];
+        }
+        forAll(mesh.boundary(), patchi)
+        {
+            if (patchKinds_[patchi] != EMPTY)
+            {
+                const fvPatch& p = mesh.boundary()[patchi];
+                forAll(p, i)
+                {
+                    fMag[p.faceCells()[i]] += sigma*p.magSf()[i];
+                }
+            }
+        }
+        forceFloor_ = Foam::sqrt(gSumSqr(fMag));
+    }
 
     if (preconditionerType_ == "fdJacobian")
     {

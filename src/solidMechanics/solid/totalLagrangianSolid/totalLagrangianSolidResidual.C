@@ -261,7 +261,8 @@ void Foam::totalLagrangianSolid::residual(vectorField& R)
         }
     }
 
-    forceScale_ = Foam::sqrt(gSumSqr(fMag));
+    // Floored [S14]: a body released to zero stress must still converge
+    forceScale_ = max(Foam::sqrt(gSumSqr(fMag)), forceFloor_);
 }
 
 
