@@ -31,6 +31,7 @@ Description
 #include "newtonKrylov.H"
 #include "OFstream.H"
 #include "clockTime.H"
+#include "writeSchedule.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -48,6 +49,7 @@ int main(int argc, char *argv[])
     #include "createFields.H"
     #include "readSolidControls.H"
 
+    const writeSchedule writes(runTime);
     const scalar userDeltaT = runTime.deltaTValue();
     scalar deltaT = userDeltaT;
     label nCutBacks = 0;
@@ -86,12 +88,7 @@ int main(int argc, char *argv[])
         // the next one): the whole time state is restored on a cut-back
         const TimeState lastConverged(runTime);
 
-        // Take the rest of the run in one step rather than leave a sliver
-        const scalar remaining = runTime.endTime().value() - t0;
-        runTime.setDeltaT
-        (
-            remaining < (1 + 1e-3)*deltaT ? remaining : deltaT
-        );
+        runTime.setDeltaT(writes.step(t0, deltaT), false);
         ++runTime;
 
         Info<< "Time = " << runTime.timeName() << ", deltaT = "
@@ -119,6 +116,7 @@ int main(int argc, char *argv[])
                 << res.forceResidual << endl;
 
             const scalar failedTime = runTime.value();
+            const scalar failedDeltaT = runTime.deltaTValue();
             const bool tooSmall =
                 cutBackFactor*runTime.deltaTValue() < minDeltaTRatio*userDeltaT;
 
@@ -138,7 +136,7 @@ int main(int argc, char *argv[])
                     << "The step to time " << failedTime
                     << " did not converge after " << nCutBacks - 1
                     << " cut-backs of the time step (last deltaT "
-                    << runTime.deltaTValue() << " s, reason: " << res.reason
+                    << failedDeltaT << " s, reason: " << res.reason
                     << ")." << nl
                     << "The last converged time, " << t0 << ", is written;"
                     << " check the loading, the boundary conditions"
@@ -179,7 +177,10 @@ int main(int argc, char *argv[])
         nCutBacks = 0;
         deltaT = min(timeStepGrowth*deltaT, userDeltaT);
 
-        runTime.write();
+        if (writes.due(t0))
+        {
+            runTime.writeNow();
+        }
 
         Info<< "    ExecutionTime = " << runTime.elapsedCpuTime() << " s"
             << "  ClockTime = " << runTime.elapsedClockTime() << " s"

@@ -50,14 +50,16 @@ int main()
         const auto& lub =
             dynamic_cast<const frictionLaws::lubricatedRateState&>(*law);
         frictionPointDriver drv(*law, p);
-        const scalar v = 1e-3, dt = 0.05*D0/v;
+        // a_eff > 0 here (0.010 at 0.1 v_c); near v_c this set has a_eff < 0
+        // and sliding at a prescribed rate does not settle (ill-posed, [F21])
+        const scalar v = 1e-4, dt = 0.05*D0/v;
         for (label i = 0; i < 2000; ++i) drv.step(drv.slip() + v*dt, dt);
         const scalar theta = drv.state().contactAge;
         unitTest::checkAbs("f = 1", lub.f(v, theta), 1, 1e-9);
         scalar m0, dm0, alpha, da;
         lub.mu0(v, m0, dm0);
         lub.lubrication().alpha(v, alpha, da);
-        unitTest::checkAbs("alpha(v_b, D_b) = 1/2", alpha, 0.5, 1e-14);
+        unitTest::checkAbs("alpha(v_b/10, D_b) = 1/11", alpha, 1.0/11, 1e-14);
         unitTest::checkRel
         (
             "tT = (1-alpha) mu0 tN + alpha eta_b v",
@@ -85,13 +87,16 @@ int main()
             drv.step(drv.slip() + v2*dt, dt);
             const scalar d = drv.slip() - s0;
             const scalar fEx = 1 + M*std::log(1 + (v2/v1 - 1)*std::exp(-d/D0));
-            const scalar fNum = lub.f(v2, drv.state().contactAge);
-            errF = max(errF, mag(fNum - fEx));
+            const scalar vp = drv.state().slipRate;
+            errF = max(errF, mag(lub.f(v2, drv.state().contactAge) - fEx));
+            const scalar fNum = lub.f(vp, drv.state().contactAge);
             scalar m0, dm0;
-            lub.mu0(v2, m0, dm0);
+            lub.mu0(vp, m0, dm0);
             errT = max(errT, mag(drv.last().tT.x() - fNum*m0*p)/(m0*p));
         }
-        unitTest::checkBelow("max |f - exact|", errF, 1e-6);
+        // The sliding rate follows the prescribed step within the elastic
+        // slip mu tN/KT = 1e-3 D0: f within 1e-4 of the rigid-contact formula
+        unitTest::checkBelow("max |f - exact|", errF, 1e-4);
         unitTest::checkBelow
         (
             "alpha = 0: tT = f mu0 tN exactly while sliding (rel)", errT, 1e-12
@@ -177,7 +182,7 @@ int main()
         law->update(old, in, r);
         unitTest::checkTrue("sliding", r.state.status == 2);
         unitTest::checkBelow("tangent vs FD (slip)", frictionTest::tangentError(*law, old, in, 1e-5), 1e-6);
-        in.gT = old.totalSlip + 0.2e-6*t1 - 0.3e-6*t2;     // sticks
+        in.gT = old.plasticSlip + 0.3e-6*t1 - 0.2e-6*t2;   // sticks
         in.dt = 10;
         law->update(old, in, r);
         unitTest::checkTrue("sticking", r.state.status == 1);

@@ -12,8 +12,10 @@ Description
     Expected:
       coulomb, curnier: rate independent; on a monotone 1-D path the
         return mapping is exact -> error at round-off for every step;
-      lubricatedRateState: its rate is the total slip rate, piecewise
-        constant here, and its state update exact -> round-off;
+      lubricatedRateState on a velocity step: ageing and mu0 see the
+        sliding (plastic) slip rate, the backward difference of the plastic
+        slip, which lags the prescribed step -> first order, last order in
+        [0.8, 1.3];
       rateState (ageing, slip, relaxation): the plastic rate is the
         backward difference of the slip -> first order (observed order of
         the last two halvings in [0.8, 1.3]);
@@ -146,7 +148,12 @@ int main()
             return t <= s1 ? w1*t : w1*s1 + w2*(t - s1);
         };
         study("lubricated, velocity step", lub, 1e8, S, 5e-4, 0.025, err, order);
-        unitTest::checkBelow("lubricated, velocity step: exact (max error)", max(err), 1e-12);
+        unitTest::checkTrue
+        (
+            "lubricated, velocity step: first order (last order in [0.8, 1.3])",
+            order[3] > 0.8 && order[3] < 1.3
+        );
+        unitTest::checkBelow("lubricated, velocity step: error at dt0/16", err[4], 2e-3);
     }
     {
         const scalar w = 1e-4, T = 0.02;

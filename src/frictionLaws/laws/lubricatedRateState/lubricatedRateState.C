@@ -170,6 +170,34 @@ Foam::frictionLaws::lubricatedRateState::initialState() const
 }
 
 
+void Foam::frictionLaws::lubricatedRateState::contactAge
+(
+    const frictionState& old,
+    const scalar vp,
+    const scalar dt,
+    scalar& theta1,
+    scalar& dtheta1dvp
+) const
+{
+    // Age at the start of the step: a face closing now starts in steady
+    // sliding at its first slip rate with steadySliding [F17b]
+    scalar theta0 = old.contactAge;
+    scalar dtheta0dvp = 0;
+    if (steadyFreshContact_ && old.status == frictionState::OPEN)
+    {
+        const scalar veff2 = vp*vp + Vs_*Vs_;
+        theta0 = D0_/std::sqrt(veff2);
+        dtheta0dvp = -theta0*vp/veff2;
+    }
+
+    // Exact step of L22 at constant sliding rate [F13]
+    const scalar x = vp*dt/D0_;
+    scalar dtheta1dx;
+    relaxationStep(theta0, x, dt, theta1, dtheta1dx);
+    dtheta1dvp = dtheta1dx*dt/D0_ + std::exp(-x)*dtheta0dvp;
+}
+
+
 void Foam::frictionLaws::lubricatedRateState::update
 (
     const frictionState& old,
@@ -187,57 +215,56 @@ void Foam::frictionLaws::lubricatedRateState::update
 
     const scalar tN = out.tN;
     const scalar dt = in.dt;
+    const scalar KN = KN_;
     const tensor P = projector(in.n);
 
-    // Step's slip rate [F16]
-    const vector vv = (P & (in.gT - old.totalSlip))/dt;
-    const scalar v = mag(vv);
-    const vector vHat = v > 0 ? vv/v : vector::zero;
-
-    const scalar veff2 = v*v + Vs_*Vs_;
-
-    // Age at the start of the step: a face closing now starts in steady
-    // sliding at its first slip rate with steadySliding [F17b]
-    scalar theta0 = old.contactAge;
-    scalar dtheta0dv = 0;
-    if (steadyFreshContact_ && old.status == frictionState::OPEN)
+    // Sliding threshold Y = f mu0 tN at a trial sliding increment dg, the
+    // rate of ageing and of mu0 being the sliding rate dg/dt [F16]-[F18]
+    auto threshold = [&](scalar dg, slipThreshold& thr)
     {
-        const scalar veff = std::sqrt(veff2);
-        theta0 = D0_/veff;
-        dtheta0dv = -theta0*v/veff2;
-    }
-
-    // Exact contact-age update at |v| (L22) [F13]
-    scalar theta1, dthetadx;
-    const scalar x = v*dt/D0_;
-    relaxationStep(theta0, x, dt, theta1, dthetadx);
-    const scalar dthetadv = dthetadx*dt/D0_ + std::exp(-x)*dtheta0dv;
-
-    // Ageing factor (L23, L26) [F17] and mu0 (L24) [F18]
-    const scalar fRaw = 1 + 0.5*M_*std::log(theta1*theta1*veff2/(D0_*D0_));
-    const scalar fv = max(fRaw, 0);
-    const scalar dfdv = fRaw > 0 ? M_*(dthetadv/theta1 + v/veff2) : 0;
-    scalar m0, dm0dv;
-    mu0(v, m0, dm0dv);
-
-    const scalar Y = fv*m0*tN;
-    const vector dYdgT = tN*(dfdv*m0 + fv*dm0dv)/dt*vHat;
-    const scalar dYdgN = fv*m0*KN_;
-
-    auto threshold = [&](scalar, slipThreshold& thr)
-    {
-        thr.Y = Y;
-        thr.dYdDg = 0;
-        thr.dYdgN = dYdgN;
-        thr.dYdgT = dYdgT;
+        const scalar vp = dg/dt;
+        scalar theta1, dtheta1dvp;
+        contactAge(old, vp, dt, theta1, dtheta1dvp);
+        const scalar veff2 = vp*vp + Vs_*Vs_;
+        const scalar fRaw =
+            1 + 0.5*M_*std::log(theta1*theta1*veff2/(D0_*D0_));
+        scalar m0, dm0dvp;
+        mu0(vp, m0, dm0dvp);
+        if (fRaw > 0)
+        {
+            const scalar dfdvp = M_*(dtheta1dvp/theta1 + vp/veff2);
+            thr.Y = fRaw*m0*tN;
+            thr.dYdDg = tN*(dfdvp*m0 + fRaw*dm0dvp)/dt;
+            thr.dYdgN = fRaw*m0*KN;
+        }
+        else
+        {
+            thr.Y = 0;
+            thr.dYdDg = 0;
+            thr.dYdgN = 0;
+        }
+        thr.dYdgT = Zero;
     };
 
     const vector xiTrial = KT_*(P & (in.gT - old.plasticSlip));      // [F3]
     radialReturn::output rr;
-    radialReturn::solve(xiTrial, Zero, KT_, KT_, P, threshold, rr);
+    // The last step's sliding rate is the natural first guess
+    const scalar dgGuess =
+        old.status == frictionState::SLIP ? old.slipRate*dt : -1;
+    radialReturn::solve
+    (
+        xiTrial, Zero, KT_, KT_, P, threshold, rr, nullptr, dgGuess
+    );
     setFromReturn(old, in, rr, out);
 
-    // Assemble L21 [F20]
+    const scalar vp = rr.dg/dt;
+    scalar theta1, dtheta1dvp;
+    contactAge(old, vp, dt, theta1, dtheta1dvp);
+
+    // The film shears at the total slip rate of the step [F16], L21 [F20]
+    const vector vv = (P & (in.gT - old.totalSlip))/dt;
+    const scalar v = mag(vv);
+    const vector vHat = v > 0 ? vv/v : vector::zero;
     scalar alpha, dalphadv;
     lubrication_->alpha(v, alpha, dalphadv);
     const vector viscous = etaB_*vv;
@@ -250,7 +277,8 @@ void Foam::frictionLaws::lubricatedRateState::update
 
     out.state.contactAge = theta1;
     out.state.lubricationWeight = alpha;
-    out.state.slipRate = v;
+    out.state.slipRate = vp;
 }
+
 
 // ************************************************************************* //

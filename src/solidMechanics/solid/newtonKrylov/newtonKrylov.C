@@ -290,6 +290,12 @@ Foam::newtonKrylov::result Foam::newtonKrylov::solve
             break;
         }
 
+        if (verbose_)
+        {
+            Info<< "        " << lastKrylov << " Krylov iterations, step "
+                << lambda << (decreased ? "" : " (no decrease)") << endl;
+        }
+
         dx *= lambda;
         x = xTrial;
         R = Rtrial;
