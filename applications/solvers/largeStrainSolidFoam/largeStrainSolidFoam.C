@@ -55,6 +55,7 @@ int main(int argc, char *argv[])
     label nCutBacks = 0;
     label nSteps = 0;
     label nNewtonTotal = 0;
+    label nAccepted = 0;
 
     autoPtr<OFstream> perfFile;
     if (Pstream::master())
@@ -107,6 +108,20 @@ int main(int argc, char *argv[])
             const label nNewton = res.newtonIterations;
             res = nonlinearSolver.solve(solid, x, xStart);
             res.newtonIterations += nNewton;
+        }
+
+        if
+        (
+            !res.converged
+         && res.forceResidual <= acceptableForceTolerance
+         && std::isfinite(res.forceResidual)
+        )
+        {
+            ++nAccepted;
+            res.converged = true;
+            Info<< "    accepted: Newton stalled at force residual "
+                << res.forceResidual << " <= acceptableForceTolerance "
+                << acceptableForceTolerance << endl;
         }
 
         if (!res.converged)
@@ -188,7 +203,12 @@ int main(int argc, char *argv[])
     }
 
     Info<< "Steps: " << nSteps << ", Newton iterations: " << nNewtonTotal
-        << " (" << scalar(nNewtonTotal)/max(nSteps, 1) << " per step)" << nl
+        << " (" << scalar(nNewtonTotal)/max(nSteps, 1) << " per step)";
+    if (nAccepted)
+    {
+        Info<< ", " << nAccepted << " accepted at acceptableForceTolerance";
+    }
+    Info<< nl
         << "End\n" << endl;
 
     return 0;

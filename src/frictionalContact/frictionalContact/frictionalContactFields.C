@@ -181,6 +181,36 @@ bool Foam::frictionalContactFvPatchVectorField::stiffness
 }
 
 
+void Foam::frictionalContactFvPatchVectorField::linearise
+(
+    const solidPatchKinematics& k
+)
+{
+    linearised_ = false;
+    const label n = state_.size();
+    heldInput_.setSize(n);
+    heldResult_.setSize(n);
+    heldInReach_.setSize(n);
+    vector normal;
+    scalar area;
+    scalar gap;
+    forAll(state_, i)
+    {
+        heldInReach_[i] = evaluateFace
+        (
+            i, k, heldResult_[i], normal, area, gap, &heldInput_[i]
+        );
+    }
+    linearised_ = true;
+}
+
+
+void Foam::frictionalContactFvPatchVectorField::release()
+{
+    linearised_ = false;
+}
+
+
 void Foam::frictionalContactFvPatchVectorField::commit
 (
     const solidPatchKinematics& k

@@ -99,6 +99,7 @@ void Foam::frictionalContactFvPatchVectorField::copyFrom
     maxPenetrationAt_ = ptf.maxPenetrationAt_;
     nContact_ = ptf.nContact_;
     nSlip_ = ptf.nSlip_;
+    linearised_ = false;
 }
 
 
@@ -181,9 +182,15 @@ bool Foam::frictionalContactFvPatchVectorField::evaluateFace
     frictionResult& res,
     vector& gapNormal,
     scalar& area,
-    scalar& gap
+    scalar& gap,
+    frictionInput* input
 ) const
 {
+    if (linearised_ && !heldInReach_[facei])
+    {
+        return false;
+    }
+
     const frictionState& old = state_[facei];
 
     // [C2] geometry: deformed face centre against the obstacle, the search
@@ -223,7 +230,24 @@ bool Foam::frictionalContactFvPatchVectorField::evaluateFace
     in.n = cp.n;
     in.dt = k.deltaT;
 
-    law().update(old, in, res);
+    if (linearised_)
+    {
+        // [S15b] the held face's tangent, not the law
+        const frictionInput& in0 = heldInput_[facei];
+        res = heldResult_[facei];
+        const scalar dgN = in.gN - in0.gN;
+        const vector dgT(in.gT - in0.gT);
+        res.tN += res.dtNdgN*dgN;
+        res.tT += (res.dtTdgT & dgT) + res.dtTdgN*dgN;
+    }
+    else
+    {
+        law().update(old, in, res);
+    }
+    if (input)
+    {
+        *input = in;
+    }
 
     // [C4] current area, Nanson
     const tensor& F = k.F[facei];
@@ -253,7 +277,8 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     maxPenetration_(0),
     maxPenetrationAt_(Zero),
     nContact_(0),
-    nSlip_(0)
+    nSlip_(0),
+    linearised_(false)
 {}
 
 
@@ -284,7 +309,8 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     maxPenetration_(0),
     maxPenetrationAt_(Zero),
     nContact_(0),
-    nSlip_(0)
+    nSlip_(0),
+    linearised_(false)
 {
     if (!isA<wallFvPatch>(p))
     {
@@ -381,7 +407,8 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     maxPenetration_(0),
     maxPenetrationAt_(Zero),
     nContact_(0),
-    nSlip_(0)
+    nSlip_(0),
+    linearised_(false)
 {
     // iF may be a null field (reconstructPar): the time comes from the mesh
     obstacleDict_ = ptf.obstacleDict_;

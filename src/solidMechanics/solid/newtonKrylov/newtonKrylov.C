@@ -23,6 +23,10 @@ Foam::newtonKrylov::newtonKrylov(const dictionary& dict)
     (
         dict.lookupOrDefault<bool>("fullStepFallback", false)
     ),
+    holdLinearisation_
+    (
+        dict.lookupOrDefault<bool>("holdContactLinearisation", true)
+    ),
     nResidualEvaluations_(0)
 {
     if (forceTol_ <= 0 || displacementTol_ <= 0 || maxNewton_ < 1
@@ -246,8 +250,18 @@ Foam::newtonKrylov::result Foam::newtonKrylov::solve
         }
         const scalar linTol = max(eta*normR, 0.1*forceTol_*Fscale);
 
+        // [S15b] one Jacobian for the preconditioner and the Krylov
+        // solve: the contact faces keep their active set meanwhile
+        if (holdLinearisation_)
+        {
+            sys.holdLinearisation(true);
+        }
         sys.updatePreconditioner(x, it, lastKrylov);
         lastKrylov = gmres(sys, x, R, linTol, dx);
+        if (holdLinearisation_)
+        {
+            sys.holdLinearisation(false);
+        }
         res.krylovIterations += lastKrylov;
         ++res.newtonIterations;
 
@@ -283,6 +297,8 @@ Foam::newtonKrylov::result Foam::newtonKrylov::solve
             xTrial = xFull;
             Rtrial = Rfull;
             normTrial = normFull;
+            // the system's fields must hold the accepted iterate
+            evaluate(sys, xTrial, Rtrial);
         }
         if (normTrial >= GREAT)
         {

@@ -131,6 +131,36 @@ void Foam::totalLagrangianSolid::beginStep
 }
 
 
+void Foam::totalLagrangianSolid::holdLinearisation(const bool on)
+{
+    forAll(forcePatches_, patchi)
+    {
+        if (patchKinds_[patchi] != FORCE)
+        {
+            continue;
+        }
+        if (on)
+        {
+            // The fields hold the last evaluated iterate
+            const fvPatch& p = mesh_.boundary()[patchi];
+            vectorField Dface;
+            tensorField F;
+            forcePatchKinematics(patchi, Dface, F);
+            const solidPatchKinematics k
+            {
+                p.Sf(), p.Cf(), Dface, forcePatchD0_[patchi], F,
+                mesh_.time().value(), mesh_.time().deltaTValue()
+            };
+            forcePatches_[patchi]->linearise(k);
+        }
+        else
+        {
+            forcePatches_[patchi]->release();
+        }
+    }
+}
+
+
 void Foam::totalLagrangianSolid::commit(const Eigen::VectorXd& x)
 {
     // Recompute the trial state of the converged iterate
