@@ -110,18 +110,11 @@ int main(int argc, char *argv[])
             res.newtonIterations += nNewton;
         }
 
-        if
-        (
-            !res.converged
-         && res.forceResidual <= acceptableForceTolerance
-         && std::isfinite(res.forceResidual)
-        )
+        if (res.accepted)
         {
             ++nAccepted;
-            res.converged = true;
             Info<< "    accepted: Newton stalled at force residual "
-                << res.forceResidual << " <= acceptableForceTolerance "
-                << acceptableForceTolerance << endl;
+                << res.forceResidual << " (acceptableForceTolerance)" << endl;
         }
 
         if (!res.converged)

@@ -11,6 +11,11 @@ License
 Foam::newtonKrylov::newtonKrylov(const dictionary& dict)
 :
     forceTol_(dict.lookupOrDefault<scalar>("forceTolerance", 1e-7)),
+    acceptableForceTol_
+    (
+        dict.lookupOrDefault<scalar>("acceptableForceTolerance", 0)
+    ),
+    stallIterations_(dict.lookupOrDefault<label>("stallIterations", 8)),
     displacementTol_
     (
         dict.lookupOrDefault<scalar>("displacementTolerance", 1e-7)
@@ -37,6 +42,14 @@ Foam::newtonKrylov::newtonKrylov(const dictionary& dict)
             << " displacementTolerance > 0, maxNewtonIterations >= 1,"
             << " krylovRestart >= 1 and maxKrylovIterations >= 1" << nl
             << exit(FatalIOError);
+    }
+    if (acceptableForceTol_ < 0 || stallIterations_ < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Dictionary " << dict.name() << ": expected"
+            << " acceptableForceTolerance >= 0 (got " << acceptableForceTol_
+            << ") and stallIterations >= 1 (got " << stallIterations_ << ")"
+            << nl << exit(FatalIOError);
     }
 }
 
@@ -194,6 +207,12 @@ Foam::newtonKrylov::result Foam::newtonKrylov::solve
     evaluate(sys, x, R);
     scalar normR = gNorm(R);
     scalar normRprev = normR;
+
+    // The best iterate: a step that stalls returns it rather than the last
+    // one (which the non-monotone line search may have made worse)
+    Eigen::VectorXd xBest(x);
+    scalar normBest = normR;
+    label itBest = 0;
     scalar eta = 1e-2;
     label lastKrylov = -1;
 
@@ -235,9 +254,24 @@ Foam::newtonKrylov::result Foam::newtonKrylov::solve
             res.converged = true;
             break;
         }
-        if (it == maxNewton_)
+        const scalar bestResidual = Fscale > 0 ? normBest/Fscale : 1;
+        const bool accept =
+            bestResidual <= acceptableForceTol_
+         && (it == maxNewton_ || it - itBest >= stallIterations_);
+        if (accept || it == maxNewton_)
         {
-            res.reason = "no convergence in maxNewtonIterations";
+            if (normBest < normR)
+            {
+                x = xBest;
+                evaluate(sys, x, R);
+                res.forceResidual = bestResidual;
+            }
+            res.converged = accept;
+            res.accepted = accept;
+            if (!accept)
+            {
+                res.reason = "no convergence in maxNewtonIterations";
+            }
             break;
         }
 
@@ -317,6 +351,15 @@ Foam::newtonKrylov::result Foam::newtonKrylov::solve
         R = Rtrial;
         normRprev = normR;
         normR = normTrial;
+        if (normR < normBest)
+        {
+            if (normR < 0.9*normBest)
+            {
+                itBest = it + 1;
+            }
+            normBest = normR;
+            xBest = x;
+        }
     }
 
     res.residualEvaluations = nResidualEvaluations_;
