@@ -8,8 +8,8 @@ import os
 import re
 
 
-def timeDirs(case):
-    """Numeric time directories of a case, sorted by time."""
+def timeValues(case):
+    """[(time, name)] of the numeric time directories of a case, sorted."""
     out = []
     for d in os.listdir(case):
         try:
@@ -18,7 +18,26 @@ def timeDirs(case):
             continue
         if os.path.isdir(os.path.join(case, d)):
             out.append((t, d))
-    return [d for t, d in sorted(out)]
+    return sorted(out)
+
+
+def timeDirs(case):
+    """Numeric time directories of a case, sorted by time."""
+    return [d for t, d in timeValues(case)]
+
+
+def readResults(path):
+    """A 'name value' results file as a dict of floats (other lines skipped)."""
+    values = {}
+    with open(path) as f:
+        for line in f:
+            w = line.split()
+            if len(w) >= 2 and not w[0].startswith("#"):
+                try:
+                    values[w[0]] = float(w[1])
+                except ValueError:
+                    pass
+    return values
 
 
 def latestTime(case):

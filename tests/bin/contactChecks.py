@@ -173,12 +173,14 @@ class lubricatedLaw:
 
     def error(self, faces, oldFaces, dt):
         """Largest violation of L21-L22 over the faces: with the step's
-        slip-rate vector vv = P (gT - gT_n)/dt (from the previous written
-        step) the contact age follows its exact update from the previous
-        step's, the frictional part F_T = (tT - alpha eta_b vv)/(1 - alpha)
-        has |F_T| = Y on sliding faces and <= Y on sticking ones; alpha
-        follows its model. Relative to Y + alpha eta_b |v| (the contact
-        age: to itself). Returns (error, nSlip, nStick, nOpen)."""
+        total slip-rate vector vv = P (gT - gT_n)/dt (the film's rate) and
+        sliding rate vp = |gTp - gTp_n|/dt (ageing and mu0, [F16]), both
+        from the previous written step, the contact age follows its exact
+        update at vp from the previous step's, the frictional part
+        F_T = (tT - alpha eta_b vv)/(1 - alpha) has |F_T| = Y(vp) on
+        sliding faces and <= Y on sticking ones; alpha(|vv|) follows its
+        model. Relative to Y + alpha eta_b |v| (the contact age: to
+        itself). Returns (error, nSlip, nStick, nOpen)."""
         err, nSlip, nStick, nOpen = 0.0, 0, 0, 0
         for f, o in zip(faces, oldFaces):
             if f["status"] == 0:
@@ -188,13 +190,19 @@ class lubricatedLaw:
             tT = [-c for c in f["tT"]]        # conjugate to the slip
             vv = [(a - b)/dt for a, b in zip(f["gT"], o["gT"])]
             v = mag(vv)
+            # the written sliding rate drives ageing and mu0; it must match
+            # the written plastic slips to their written precision (1e-10
+            # relative: a step's slip is a small difference of large slips)
+            vp = f["v"]
+            dgp = mag([a - b for a, b in zip(f["gTp"], o["gTp"])])
+            err = max(err, abs(dgp - vp*dt)
+                      / max(vp*dt, 1e-10*max(mag(f["gTp"]), 1e-9)))
             al = self.alpha(v)
-            Y = self.threshold(v, f["theta"], f["tN"])
+            Y = self.threshold(vp, f["theta"], f["tN"])
             scale = max(Y + al*self.etaB*v, 1e-12*f["tN"], 1e-300)
             theta = self.contactAge(o["theta"] if o["status"] else
-                                    self.D0/self.Vs, v, dt)
+                                    self.D0/self.Vs, vp, dt)
             err = max(err, abs(al - f["alpha"]),
-                      abs(v - f["v"])/max(v, 1e-3*self.Vs),
                       abs(f["theta"] - theta)/theta)
             if al >= 1:
                 F = 0.0

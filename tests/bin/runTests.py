@@ -19,6 +19,10 @@ import subprocess
 import sys
 import time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "bin", "python"))
+import foamio  # noqa: E402
+
 projectDir = os.path.dirname(os.path.dirname(os.path.dirname(
     os.path.abspath(__file__))))
 testsDir = os.path.join(projectDir, "tests")
@@ -119,17 +123,7 @@ def parseSpec(path):
     return spec
 
 
-def readResults(path):
-    values = {}
-    with open(path) as f:
-        for line in f:
-            w = line.split()
-            if len(w) >= 2 and not w[0].startswith("#"):
-                try:
-                    values[w[0]] = float(w[1])
-                except ValueError:
-                    pass
-    return values
+readResults = foamio.readResults
 
 
 def evaluate(check, values):

@@ -115,17 +115,7 @@ def nanFiles(case):
     return bad
 
 
-def timeDirs(case):
-    """[(time, name)] of the numeric time directories, sorted."""
-    out = []
-    for d in os.listdir(case):
-        try:
-            t = float(d)
-        except ValueError:
-            continue
-        if os.path.isdir(os.path.join(case, d)):
-            out.append((t, d))
-    return sorted(out)
+timeDirs = foamio.timeValues
 
 
 def finiteDir(path):
@@ -244,17 +234,7 @@ class Matrix:
                 "failures": self.count(FAIL)}
 
 
-def readResults(path):
-    """A 'name value' results file as a dict."""
-    values = {}
-    for line in open(path):
-        w = line.split()
-        if len(w) >= 2 and not w[0].startswith("#"):
-            try:
-                values[w[0]] = float(w[1])
-            except ValueError:
-                pass
-    return values
+readResults = foamio.readResults
 
 
 def writeResults(path, values):

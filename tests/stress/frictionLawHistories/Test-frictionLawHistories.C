@@ -264,12 +264,13 @@ bool drive
         }
 
         // Lubricated: exact contact age in the hold, the jump and the
-        // restart, and exact traction on the sliding steps of the last two
-        // (theta from the segment's start)
+        // restart, and exact traction on the sliding steps: each step from
+        // the previous one at its sliding rate v_p (ageing, mu0) and the
+        // prescribed total rate v (film) [F16]
         if (c.lubricatedLaw && (si == JUMP || si == RESTART || si == HOLD))
         {
             const lubricated& L = c.lub;
-            const scalar theta0 = rows[si - 1].back().r.state.contactAge;
+            scalar thetaPrev = rows[si - 1].back().r.state.contactAge;
             auto lawPtr =
                 dynamic_cast<const frictionLaws::lubricatedRateState*>
                 (law.get());
@@ -277,20 +278,21 @@ bool drive
             for (size_t i = 0; i < rs.size(); ++i)
             {
                 const scalar v = mag(g.v);
-                const scalar d = v*g.dt*(i + 1);
+                const scalar vp = rs[i].r.state.slipRate;
+                const scalar x = vp*g.dt/L.D0;
                 const scalar theta =
-                    v > 0
-                  ? theta0*std::exp(-d/L.D0)
-                  - L.D0/v*std::expm1(-d/L.D0)
-                  : theta0 + g.dt*(i + 1);
+                    vp > 0
+                  ? thetaPrev*std::exp(-x) - L.D0/vp*std::expm1(-x)
+                  : thetaPrev + g.dt;
+                thetaPrev = rs[i].r.state.contactAge;
                 scalar err = mag(rs[i].r.state.contactAge - theta)/theta;
                 if (rs[i].r.state.status == frictionState::SLIP)
                 {
                     ++nSlide;
                     const scalar f =
-                        1 + L.M*std::log(theta*std::hypot(v, L.Vs)/L.D0);
+                        1 + L.M*std::log(theta*std::hypot(vp, L.Vs)/L.D0);
                     scalar m0, dm0, alpha, da;
-                    lawPtr->mu0(v, m0, dm0);
+                    lawPtr->mu0(vp, m0, dm0);
                     lawPtr->lubrication().alpha(v, alpha, da);
                     const scalar tT =
                         sign(g.v)*((1 - alpha)*max(f, 0)*m0*p
