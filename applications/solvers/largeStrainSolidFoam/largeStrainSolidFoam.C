@@ -187,6 +187,9 @@ int main(int argc, char *argv[])
 
         if (writes.due(t0))
         {
+            // the output fields (sigma, pointD, ...) follow this schedule,
+            // not Time's own write test
+            solid.prepareWrite();
             runTime.writeNow();
         }
 
