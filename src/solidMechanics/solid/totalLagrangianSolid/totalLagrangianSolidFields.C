@@ -231,11 +231,6 @@ void Foam::totalLagrangianSolid::commit(const Eigen::VectorXd& x)
         vel.primitiveFieldRef() = (D0_ - D00_)/dt;
         vel.correctBoundaryConditions();
     }
-
-    if (mesh_.time().writeTime())
-    {
-        updateOutputFields();
-    }
 }
 
 
