@@ -8,6 +8,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.environ["TRIBOFOAM_DIR"], "bin", "python"))
 import foamio
+import neoHookeanBar as bar
 
 E, nu, L, W = 10e6, 0.3, 0.1, 0.01
 mu = E/(2*(1 + nu))
@@ -15,20 +16,11 @@ lam = E*nu/((1 + nu)*(1 - 2*nu))
 
 
 def lateralStretch(l):
-    """Lateral stretch with zero lateral stress: mu(l2 - 1/l2) + lam ln(J)/l2 = 0"""
-    lo, hi = 1e-3, 1.0
-    for _ in range(200):
-        m = 0.5*(lo + hi)
-        if mu*(m - 1/m) + lam*math.log(l*m*m)/m > 0:
-            hi = m
-        else:
-            lo = m
-    return 0.5*(lo + hi)
+    return bar.lateralStretch(l, mu, lam)
 
 
 def nominalStress(l):
-    l2 = lateralStretch(l)
-    return mu*(l - 1/l) + lam*math.log(l*l2*l2)/l
+    return bar.nominalStress(l, mu, lam)
 
 
 case = sys.argv[1] if len(sys.argv) > 1 else "."

@@ -9,26 +9,15 @@ import sys
 
 sys.path.insert(0, os.path.join(os.environ["TRIBOFOAM_DIR"], "bin", "python"))
 import foamio
+import neoHookeanBar as bar
 
 E, nu, L, p = 10e6, 0.3, 0.1, 2e6
 mu = E/(2*(1 + nu))
 lam = E*nu/((1 + nu)*(1 - 2*nu))
 
 
-def lateral(l):
-    lo, hi = 0.5, 3.0
-    for _ in range(200):
-        m = 0.5*(lo + hi)
-        if mu*(m - 1/m) + lam*math.log(l*m*m)/m > 0:
-            hi = m
-        else:
-            lo = m
-    return 0.5*(lo + hi)
-
-
 def cauchy11(l):
-    l2 = lateral(l)
-    return (mu*(l - 1/l) + lam*math.log(l*l2*l2)/l)*l/(l*l2*l2)
+    return bar.cauchyStress(l, mu, lam)
 
 
 lo, hi = 0.2, 1.0
