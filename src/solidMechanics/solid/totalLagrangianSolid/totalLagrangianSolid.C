@@ -365,7 +365,7 @@ void Foam::totalLagrangianSolid::assemblePreconditioner
 
     const scalar dt = mesh_.time().deltaTValue();
     const scalar inertiaCoeff =
-        inertia_ ? 2*law.rho()/(dt*(dt + deltaT0_)) : 0;
+        inertia_ ? 2*inertiaDensity_/(dt*(dt + deltaT0_)) : 0;
 
     // A tiny diagonal shift keeps M definite when rigid-body modes are
     // held only by the nonlinear boundary terms
@@ -573,6 +573,7 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
     epsilonPf_(historyField(mesh, "epsilonPf", scalar(0), law_->plastic())),
     comps_(solvedComponents(mesh)),
     inertia_(false),
+    inertiaDensity_(0),
     D0_(D_.primitiveField()),
     D00_(D_.primitiveField()),
     deltaT0_(mesh.time().deltaTValue()),
@@ -614,6 +615,22 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
             << "Keyword 'rho' in " << mechanicalProperties_.name()
             << " must be > 0 when d2dt2Schemes is Euler" << nl
             << exit(FatalIOError);
+    }
+
+    // [S13b] mass scaling: quasi-static forming runs with a heavier body so
+    // that the rate-dependent friction's instabilities resolve dynamically
+    const scalar massScaling =
+        mechanicalProperties_.lookupOrDefault<scalar>("massScaling", 1);
+    if (!(massScaling >= 1 && massScaling <= 1e12))
+    {
+        FatalIOErrorInFunction(mechanicalProperties_)
+            << "Keyword 'massScaling' in " << mechanicalProperties_.name()
+            << " is " << massScaling << "; expected a value in [1, 1e12]"
+            << nl << exit(FatalIOError);
+    }
+    if (inertia_)
+    {
+        inertiaDensity_ = massScaling*law_->rho();
     }
 
     // Constructing from a tmp drops the write option: set it here so the
@@ -724,7 +741,12 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
     Info<< "Total Lagrangian solid: " << comps_.size() << "-D, "
         << returnReduce(mesh.nCells(), sumOp<label>()) << " cells, law "
         << law_->type() << ", E " << law_->E() << " Pa, nu " << law_->nu()
-        << (inertia_ ? ", with inertia" : ", quasi-static") << nl << endl;
+        << (inertia_ ? ", with inertia" : ", quasi-static");
+    if (inertia_ && massScaling > 1)
+    {
+        Info<< " (mass scaling " << massScaling << ")";
+    }
+    Info<< nl << endl;
 }
 
 

@@ -244,7 +244,7 @@ void Foam::totalLagrangianSolid::residual(vectorField& R)
     if (inertia_)
     {
         const scalarField& V = mesh_.V();
-        const scalar rho = law.rho();
+        const scalar rho = inertiaDensity_;
         forAll(R, celli)
         {
             const vector acc
