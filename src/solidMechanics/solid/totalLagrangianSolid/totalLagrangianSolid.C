@@ -632,6 +632,13 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
     {
         inertiaDensity_ = massScaling*law_->rho();
     }
+    else if (massScaling != 1)
+    {
+        IOWarningInFunction(mechanicalProperties_)
+            << "Keyword 'massScaling' in " << mechanicalProperties_.name()
+            << " has no effect: the run is quasi-static (d2dt2Schemes "
+            << "steadyState)" << endl;
+    }
 
     // Constructing from a tmp drops the write option: set it here so the
     // plastic history reaches every written time (and a restart)
