@@ -146,12 +146,11 @@ int main(int argc, char *argv[])
                     << " cut-backs of the time step (last deltaT "
                     << failedDeltaT << " s, reason: " << res.reason
                     << ")." << nl
+                    << "The last converged time, " << t0 << ", is written"
                     << (
                            t0 > runTime.startTime().value()
-                         ? "The last converged time, " + name(t0)
-                         + ", is written;"
-                         : "No step converged after the start time, "
-                         + name(t0) + ", and nothing was written;"
+                         ? ";"
+                         : " (the start time: no step converged);"
                        )
                     << " check the loading, the boundary conditions"
                     << " and the solid controls in system/fvSolution" << nl
