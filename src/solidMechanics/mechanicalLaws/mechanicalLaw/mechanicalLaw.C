@@ -57,4 +57,34 @@ Foam::mechanicalLaw::mechanicalLaw(const dictionary& dict)
 {}
 
 
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::tensor Foam::mechanicalLaw::stressAndTangent
+(
+    const tensor& F,
+    const materialState& old,
+    materialState& updated,
+    stressTangent& dPdF
+) const
+{
+    // Central differences, step 1e-6 of |F|: truncation and round-off
+    // errors both near 1e-10 relative for smooth laws
+    const scalar h = 1e-6*max(mag(F), scalar(1));
+    materialState scratch;
+    for (direction b = 0; b < 9; ++b)
+    {
+        tensor Fp(F);
+        tensor Fm(F);
+        Fp[b] += h;
+        Fm[b] -= h;
+        const tensor dP((stress(Fp, old, scratch) - stress(Fm, old, scratch))/(2*h));
+        for (direction a = 0; a < 9; ++a)
+        {
+            dPdF(a, b) = dP[a];
+        }
+    }
+    return stress(F, old, updated);
+}
+
+
 // ************************************************************************* //

@@ -1,0 +1,30 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "linearSolver.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(linearSolver, 0);
+    defineRunTimeSelectionTable(linearSolver, dictionary);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::linearSolver::linearSolver
+(
+    const dictionary& dict,
+    const blockSparseMatrix& matrix
+)
+:
+    dict_(dict),
+    matrix_(matrix)
+{}
+
+
+// ************************************************************************* //
