@@ -138,8 +138,8 @@ def coulombError(faces, mu, muStatic=None):
 
 
 class lubricatedLaw:
-    """L20-L26 (doc/theory.md [F16]-[F20]) for the checks: constant or
-    Stribeck lubrication weight, L24 mu0."""
+    """The lubricated law (doc/theory.md [F16]-[F20], [F29]) for the checks:
+    constant or Stribeck lubrication weight, exponential mu0 [F18]."""
 
     def __init__(self, M, D0, Vs, muS, muD, vc, etaB, alpha=None,
                  stribeck=None):
@@ -163,7 +163,7 @@ class lubricatedLaw:
         return f*mu0*tN
 
     def contactAge(self, theta0, v, dt):
-        """Exact contact-age step at constant |v| [F13] (L22)."""
+        """Exact contact-age step at constant |v| [F13]."""
         x = v*dt/self.D0
         if x < 1e-3:
             g = 1 + x*(-0.5 + x*(1.0/6.0 - x/24.0))
@@ -172,7 +172,7 @@ class lubricatedLaw:
         return theta0*math.exp(-x) + dt*g
 
     def error(self, faces, oldFaces, dt):
-        """Largest violation of L21-L22 over the faces: with the step's
+        """Largest violation of the law [F29] over the faces: with the step's
         total slip-rate vector vv = P (gT - gT_n)/dt (the film's rate) and
         sliding rate vp = |gTp - gTp_n|/dt (ageing and mu0, [F16]), both
         from the previous written step, the contact age follows its exact

@@ -22,7 +22,7 @@ Description
                          (constant, table with steps, holds, reversals...);
       mode springSlider: a block of mass per unit area M (may be 0) under
                          the contact pressure, pulled through a spring k
-                         whose end moves at V (L18, [F22]).
+                         whose end moves at V ([F22]).
     Writes a table (time, slip, slip rate, tN, tT, mu, contact age,
     lubrication weight, status) and, if gnuplot is found, a PNG plot.
     Use it to calibrate a law against a friction test. SI units.

@@ -215,7 +215,7 @@ bool Foam::frictionalContactFvPatchVectorField::evaluateFace
     gap = cp.gap;
 
     // [C3] slip relative to the obstacle in the current tangent plane
-    // (objective rate, L22): the face's motion over the step less that of
+    // (objective rate, [F29]): the face's motion over the step less that of
     // the obstacle's material point under it
     const vector ds
     (

@@ -64,11 +64,11 @@ int main(int argc, char* argv[])
         {"curnier paraboloid",
          "type curnier; KN 1e13; KT 1e13; criterion paraboloid;"
          " referencePressure 1e6;", 1e8, 1e-6, 1e-3},
-        {"rateState ageing L11", rs + "stateLaw ageing;", 1e6, 6e-8, 0.1},
-        {"rateState slip L11", rs + "stateLaw slip;", 1e6, 6e-8, 0.1},
-        {"rateState ageing L15",
+        {"rateState ageing [F11]", rs + "stateLaw ageing;", 1e6, 6e-8, 0.1},
+        {"rateState slip [F11]", rs + "stateLaw slip;", 1e6, 6e-8, 0.1},
+        {"rateState ageing [F12]",
          rs + "stateLaw ageing; form regularised;", 1e6, 6e-8, 0.1},
-        {"rateState relaxation L17",
+        {"rateState relaxation [F27]",
          "type rateState; stateLaw relaxation; KN 1e12; KT 1e13;"
          " muStar 0.369; a 0.0349; b 0.0489; VStar 1e-6;"
          " relaxationTime 2.729; gamma 0.723;", 1e6, 4e-8, 0.1},
@@ -144,9 +144,9 @@ int main(int argc, char* argv[])
             {"coulomb", "type coulomb; KN 1e12; KT 6e10; mu 0.6;", 1e6, 1e-6, 20, 25, 0.5},
             {"curnier coulomb+tear+wear", "type curnier; KN 1e12; KT 6e10;"
              " criterion coulomb; f 0.6; QT 1e9; Q 1e9;", 1e6, 1e-6, 20, 25, 0.5},
-            {"rateState ageing L11", rsSoft + "stateLaw ageing;", 1e6, 1e-6, 20, 25, 0.5},
-            {"rateState slip L11", rsSoft + "stateLaw slip;", 1e6, 1e-6, 20, 25, 0.5},
-            {"rateState ageing L15", rsSoft + "stateLaw ageing; form regularised;",
+            {"rateState ageing [F11]", rsSoft + "stateLaw ageing;", 1e6, 1e-6, 20, 25, 0.5},
+            {"rateState slip [F11]", rsSoft + "stateLaw slip;", 1e6, 1e-6, 20, 25, 0.5},
+            {"rateState ageing [F12]", rsSoft + "stateLaw ageing; form regularised;",
              1e6, 1e-6, 20, 25, 0.5},
             {"lubricatedRateState", lub, 1e8, 1e-4, 0.02, 0.025, 5e-4}
         };
@@ -224,7 +224,7 @@ int main(int argc, char* argv[])
             return mu;
         };
         const std::vector<scalar> ref = runMu(12800);
-        table << "rateState ageing L11          ";
+        table << "rateState ageing [F11]        ";
         for (const label n : {100, 200, 400, 800, 1600})
         {
             const std::vector<scalar> mu = runMu(n);

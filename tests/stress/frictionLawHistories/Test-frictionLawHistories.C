@@ -20,20 +20,20 @@ Description
     constant rate) the steady friction of the law at that rate, signed
     (tolerance 1e-6 p):
         coulomb [F8]: mu p;  curnier [F9]: C + f p;
-        rateState, ageing and slip (L14 with the creep term of [F11]):
+        rateState, ageing and slip ([F28] with the creep term of [F11]):
             mu* + a ln(v_eff/V*) + b ln(V* / v);
-        relaxation (L17): mu* + a ln(v_eff/V*) + b gamma ln(V* / v);
-        regularised (L15, [F12]): a asinh(v/(2V*) exp((mu* + b ln(V* / v))/a));
-        lubricated (L21-L26, [F17]): (1 - alpha) f_ss mu0(v) p + alpha eta_b v
+        relaxation ([F28]): mu* + a ln(v_eff/V*) + b gamma ln(V* / v);
+        regularised ([F12]): a asinh(v/(2V*) exp((mu* + b ln(V* / v))/a));
+        lubricated ([F29], [F17]): (1 - alpha) f_ss mu0(v) p + alpha eta_b v
             with f_ss = 1 + M/2 ln(1 + V_s^2/v^2).
     The lubricated law is exact for piecewise-constant rates ([F13], theory
     8.7), so on its sliding steps after the jump and after the hold it must
-    follow, to 1e-9, the contact-age solution of brief verification #5
+    follow, to 1e-9, the contact-age solution of doc/theory.md [F23]
     generalised to any start: theta(d) = theta_0 e^(-d/D0) + D0/v
     (1 - e^(-d/D0)), f = 1 + M ln(theta v_eff/D0). In the hold the
     rate-independent and lubricated points stick with their traction
     unchanged (the viscous part drops out) and the contact age grows by the
-    hold time exactly (L26); rate-and-state points relax (the traction may
+    hold time exactly ([F17]); rate-and-state points relax (the traction may
     only fall). After the hold, laws with ageing (coulomb with mu_s > mu,
     rateState ageing, lubricated) break loose above their steady friction.
 
@@ -344,7 +344,7 @@ bool drive
     unitTest::checkBelow
     (
         c.name + ": max |tT/p - steady value| at the ends of the 5 sliding"
-        " segments (L14, L15, L17, [F8], [F9], [F17])", steadyErr, 1e-6
+        " segments ([F28], [F12], [F8], [F9], [F17])", steadyErr, 1e-6
     );
     if (c.lubricatedLaw)
     {
@@ -352,7 +352,7 @@ bool drive
         (
             c.name + ": contact age and traction vs the exact theta(d) over"
             " the jump, the hold and the restart ("
-          + std::to_string(nLubSlide) + " sliding steps; [F13], L23)",
+          + std::to_string(nLubSlide) + " sliding steps; [F13], [F17])",
             lubErr, 1e-9
         );
     }
@@ -375,7 +375,7 @@ int main()
 
     const std::string pen = "KN 1e13; KT 1e15; ";
 
-    // rate-and-state parameters (brief L11-L17)
+    // rate-and-state parameters ([F11], [F27])
     const scalar a = 0.01, b = 0.015, muStar = 0.6, VStar = 1e-6, Vc = 1e-12;
     const std::string rs =
         pen + "a 0.01; b 0.015; muStar 0.6; VStar 1e-6; L 1e-5;"
@@ -385,7 +385,7 @@ int main()
         return muStar + 0.5*a*std::log((v*v + Vc*Vc)/(VStar*VStar))
             + b*std::log(VStar/v);
     };
-    // paper board, L17
+    // paper board, relaxation law [F27]
     const scalar aR = 0.0349, bR = 0.0489, muR = 0.369, gammaR = 0.723;
     auto relaxSteady = [=](scalar v)
     {
@@ -400,7 +400,7 @@ int main()
         );
     };
 
-    // lubricated law (L20-L26): slidingBlock set, KT stiff
+    // lubricated law ([F29]): slidingBlock set, KT stiff
     const lubricated lub{0.1, 1e-6, 1e-9, 3e9};
     auto lubDict = [&](const std::string& mu0, const std::string& lubr)
     {
@@ -505,7 +505,7 @@ int main()
         }
         unitTest::checkAbs
         (
-            "zero film: alpha = 0 at rates 1e-9 to 1e3 m/s (L25)",
+            "zero film: alpha = 0 at rates 1e-9 to 1e3 m/s ([F19])",
             alphaMax, 0, 0
         );
 
@@ -524,7 +524,7 @@ int main()
         unitTest::checkBelow
         (
             "alpha = 1: |tT - eta_b v| [Pa] at every step, hold included"
-            " (Newtonian film, L21)", err, 1e-6
+            " (Newtonian film, [F20])", err, 1e-6
         );
     }
 

@@ -3,7 +3,7 @@ License
     This file is part of triboFoam, GPL-3.0-or-later.
 
 Description
-    Coulomb law (doc/theory.md [F8]; brief L1, L20-L22 with
+    Coulomb law (doc/theory.md [F8]; [F1], [F29] with
     alpha = 0): stick below the threshold (tT = KT gT exactly), |tT| = mu tN
     in slip, return direction along the trial traction, consistent tangent
     against central finite differences (1e-6 relative), static/dynamic

@@ -3,11 +3,11 @@ License
     This file is part of triboFoam, GPL-3.0-or-later.
 
 Description
-    Curnier's law (L2-L10; doc/theory.md [F9], [F10]):
+    Curnier's law (doc/theory.md [F9], [F10], [F25], [F26]):
       - each criterion's yield surface: after a return the traction lies on
         the surface (coulomb with adhesion, anisotropicCoulomb along e1, e2
         and 45 degrees, paraboloid, power n = 3), and a trial inside sticks;
-      - non-associated slip (L10): sliding under compression leaves tN and
+      - non-associated slip ([F26]): sliding under compression leaves tN and
         the normal slip unchanged and the slip increment is tangent;
       - tear: after forward slip s, reverse slip starts at Y - QT s and
         forward at Y + QT s (Bauschinger-like);
@@ -104,7 +104,7 @@ int main()
         );
     }
 
-    Info<< "Non-associated slip (L10)" << endl;
+    Info<< "Non-associated slip ([F26])" << endl;
     {
         autoPtr<frictionLaw> law =
             frictionTest::law(pen + "criterion coulomb; f 0.3;");

@@ -3,11 +3,11 @@ License
     This file is part of triboFoam, GPL-3.0-or-later.
 
 Description
-    Lubricated rate-and-state law (L20-L26), pear-tube parameter set
+    Lubricated rate-and-state law ([F29]), pear-tube parameter set
     (tN = 1e8 Pa, M = 0.1, D0 = 1e-6 m, V_s = 1e-9 m/s, v_c = 1e-3 m/s,
     eta_b = 3e9 Pa s/m, Stribeck D = D_b = 1e-6 m, v_b = 1e-3 m/s, n = 1):
       - steady sliding: f = 1 and tT = (1-alpha) mu0(v) tN + alpha eta_b v;
-      - velocity step (verification #5, L23):
+      - velocity step ([F23], [F17]):
         f(d) = 1 + M ln(1 + (v2/v1 - 1) exp(-d/D0));
       - hold then slide: the peak rises by M mu0 tN ln(theta2/theta1)
         (logarithmic strengthening with hold time);
@@ -67,7 +67,7 @@ int main()
         );
     }
 
-    Info<< "Velocity step 1e-4 -> 1e-3 m/s (verification #5, L23)" << endl;
+    Info<< "Velocity step 1e-4 -> 1e-3 m/s ([F23])" << endl;
     {
         autoPtr<frictionLaw> law = frictionTest::law
         (

@@ -5,12 +5,12 @@ License
 Description
     Rate-and-state law driven at imposed slip rate by frictionPointDriver:
       - velocity step v1 -> v2 from steady state, ageing law, against the
-        exact solution (brief verification #5): error < 1e-3 in mu
+        exact solution ([F23]): error < 1e-3 in mu
         (expected far smaller: the state update is exact at constant rate);
       - the same for the slip law (exact: theta = (L/v2)(v2/v1)^exp(-d/L));
-      - steady state mu_ss (L14) for ageing and slip, and L17 for the
+      - steady state mu_ss [F28] for ageing and slip, and for the
         paper-board relaxation law;
-      - regularised form (L15): finite at v = 0, equals L11 at v >> V*;
+      - regularised form [F12]: finite at v = 0, equals [F11] at v >> V*;
       - consistent tangent vs finite differences while sliding (1e-6);
       - hold: theta grows like time (ageing).
 
@@ -79,7 +79,7 @@ int main()
 {
     FatalError.throwExceptions();
 
-    Info<< "Velocity step 1e-6 -> 1e-5 m/s (verification #5)" << endl;
+    Info<< "Velocity step 1e-6 -> 1e-5 m/s ([F23])" << endl;
     {
         scalar jump;
         const scalar e = velocityStepError("ageing", jump);
@@ -110,15 +110,15 @@ int main()
                 mu = drv.step(drv.slip() + v*dt, dt).mu;
             }
             const scalar muSs = 0.6 + (0.01 - 0.015)*std::log(v/1e-6);
-            unitTest::checkAbs("L14 mu_ss, " + sl, mu, muSs, 1e-8);
+            unitTest::checkAbs("[F28] mu_ss, " + sl, mu, muSs, 1e-8);
             unitTest::checkRel
             (
-                "L14 theta_ss = L/v, " + sl,
+                "[F28] theta_ss = L/v, " + sl,
                 drv.state().contactAge, 1e-5/v, 1e-6
             );
         }
 
-        // Paper board, L17 with power-law phi_ss
+        // Paper board, relaxation law [F27] with power-law phi_ss
         autoPtr<frictionLaw> law = frictionTest::law
         (
             "type rateState; stateLaw relaxation; KN 1e12; KT 1e15;"
@@ -138,13 +138,13 @@ int main()
                 0.369 + (0.0349 - 0.0489*0.723)*std::log(v/1e-6);
             unitTest::checkAbs
             (
-                "L17 mu_ss (paper board), v = " + std::string(Foam::name(v)),
+                "[F28] mu_ss (paper board), v = " + std::string(Foam::name(v)),
                 mu, muSs, 1e-8
             );
         }
     }
 
-    Info<< "Regularised form (L15)" << endl;
+    Info<< "Regularised form [F12]" << endl;
     {
         autoPtr<frictionLaw> law = frictionTest::law
         (
@@ -157,7 +157,7 @@ int main()
         unitTest::checkTrue("mu(v = 0) = 0, finite slope", m == 0 && std::isfinite(d1));
         unitTest::checkAbs
         (
-            "L15 steady state = L14 at v = 1e-5",
+            "[F12] steady state = [F28] at v = 1e-5",
             rs.muSteady(1e-5), 0.6 - 0.005*std::log(10.0), 1e-12
         );
         // A hold at v = 0: no NaN, finite traction

@@ -3,7 +3,7 @@ License
     This file is part of triboFoam, GPL-3.0-or-later.
 
 Description
-    Spring-slider stability (brief verification #4, L18), quasi-static
+    Spring-slider stability ([V6], [F22], [F22b]), quasi-static
     (M = 0) and with inertia, by frictionPointDriver:
     steady sliding at V is perturbed (state theta x 1.05) and the amplitude
     of the slip-rate oscillation is compared between the first and the last
@@ -11,7 +11,7 @@ Description
     (grows) at k = 0.9 k*.
 
     Case 1: ageing law, k* = (b - a) sigma/L.
-    Case 2: paper board, relaxation law L17 with power-law phi_ss; the
+    Case 2: paper board, relaxation law [F27] with power-law phi_ss; the
     same linearisation gives k* = sigma (b gamma - a) G_phi / V with
     G_phi = 1/(t** phi_ss(V)) (doc/theory.md [F22]).
     The contact stiffness KT acts in series with k: the spring is set to
@@ -73,7 +73,7 @@ int main()
 
     const scalar sigma = 1e6;
 
-    Info<< "Ageing law (L11 + L12)" << endl;
+    Info<< "Ageing law ([F11] + [F27])" << endl;
     {
         const scalar a = 0.01, b = 0.015, L = 1e-5, V = 1e-6;
         autoPtr<frictionLaw> law = frictionTest::law
@@ -92,7 +92,7 @@ int main()
         unitTest::checkBelow("k = 1.1 k*: amplitude decays (ratio)", rs, 0.5);
         unitTest::checkTrue("k = 0.9 k*: amplitude grows (ratio > 2)", ru > 2);
 
-        // With inertia, L18: k_c = k* (1 + M G_phi/F_v), G_phi = V/L,
+        // With inertia, [F22b]: k_c = k* (1 + M G_phi/F_v), G_phi = V/L,
         // F_v = a sigma/V; M chosen so that k_c = 1.2 k*: now 1.1 k* is
         // unstable and 1.3 k* stable
         const scalar M = 0.2*a*sigma*L/(V*V);
@@ -102,7 +102,7 @@ int main()
         unitTest::checkTrue("M: k_c = 1.2 k*, k = 1.1 k*: grows", ruM > 2);
     }
 
-    Info<< "Paper board (L17, relaxation law)" << endl;
+    Info<< "Paper board ([F27], relaxation law)" << endl;
     {
         const scalar a = 0.0349, b = 0.0489, gamma = 0.723, tR = 2.729;
         const scalar V = 1e-6, VStar = 1e-6;

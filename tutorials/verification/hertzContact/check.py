@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # Hertz line contact: peak pressure and half-width of the computed contact
 # pressure against Hertz for the computed contact force (doc/theory.md
-# [V4]; shared brief verification #2). Writes results.dat.
+# [V4]). Writes results.dat.
 #
 # The half model carries half the load of the full cylinder, per thickness
 # t: P = 2 Fy / t. Hertz: a = sqrt(4 P R/(pi E*)), p0 = 2 P/(pi a),

@@ -2,7 +2,7 @@
 # Continuum spring-slider: amplitude of the friction coefficient's
 # oscillation over the last quarter of the run, for a slab thinner (stable)
 # and thicker (unstable) than h_c = G L/((b - a) sigma) (doc/theory.md
-# [V6]; shared brief verification #4, L18, L19). Appends to results.dat.
+# [V6], [F22], [F22c]). Appends to results.dat.
 import os
 import sys
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # Thick cylinder, elastic: radial displacement against the Lame solution
-# (doc/theory.md [V1]; shared brief verification #1). Writes results.dat.
+# (doc/theory.md [V1]). Writes results.dat.
 import math
 import os
 import sys

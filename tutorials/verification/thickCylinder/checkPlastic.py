@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # Thick cylinder, elastic-perfectly plastic: plastic radius against the
 # classical partly-plastic solution p = k (1 - c^2/b^2 + 2 ln(c/a))
-# (doc/theory.md [V2]; shared brief verification #1). Writes results.dat.
+# (doc/theory.md [V2]). Writes results.dat.
 #
 # The plastic radius c is measured from the outer-surface displacement:
 # the zone c < r < b is elastic and yields exactly at r = c, so u(b) is an

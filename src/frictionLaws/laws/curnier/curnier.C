@@ -117,7 +117,7 @@ void Foam::frictionLaws::curnier::update
     {
         openContact(old, in, out);
         out.state.tearSlip = Zero;
-        out.state.normalSlip = -in.gN;      // separation, L10
+        out.state.normalSlip = -in.gN;      // separation, [F26]
         return;
     }
 

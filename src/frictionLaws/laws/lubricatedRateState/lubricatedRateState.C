@@ -93,7 +93,7 @@ void Foam::frictionLaws::lubricatedRateState::mu0
         dmdv = (mu0Fn_->value(v + h) - mu0Fn_->value(vm))/(v + h - vm);
         return;
     }
-    // [F18] (L24)
+    // [F18]
     const scalar e = std::exp(-v/vc_);
     m = muD_ + (muS_ - muD_)*e;
     dmdv = -(muS_ - muD_)*e/vc_;
@@ -106,7 +106,7 @@ Foam::scalar Foam::frictionLaws::lubricatedRateState::f
     const scalar theta
 ) const
 {
-    // [F17] (L23, L26)
+    // [F17]
     return max(1 + 0.5*M_*std::log(theta*theta*(v*v + Vs_*Vs_)/(D0_*D0_)), 0);
 }
 
@@ -190,7 +190,7 @@ void Foam::frictionLaws::lubricatedRateState::contactAge
         dtheta0dvp = -theta0*vp/veff2;
     }
 
-    // Exact step of L22 at constant sliding rate [F13]
+    // Exact contact-age step ([F29]) at constant sliding rate [F13]
     const scalar x = vp*dt/D0_;
     scalar dtheta1dx;
     relaxationStep(theta0, x, dt, theta1, dtheta1dx);
@@ -261,7 +261,7 @@ void Foam::frictionLaws::lubricatedRateState::update
     scalar theta1, dtheta1dvp;
     contactAge(old, vp, dt, theta1, dtheta1dvp);
 
-    // The film shears at the total slip rate of the step [F16], L21 [F20]
+    // The film shears at the total slip rate of the step [F16], [F20]
     const vector vv = (P & (in.gT - old.totalSlip))/dt;
     const scalar v = mag(vv);
     const vector vHat = v > 0 ? vv/v : vector::zero;

@@ -69,7 +69,7 @@ void Foam::frictionLaws::rateState::mu
 
     if (!regularised_)
     {
-        // [F11] (L11 with creep regularisation)
+        // [F11] (with creep regularisation)
         const scalar veff2 = v*v + Vc_*Vc_;
         muValue = muStar_ + 0.5*a_*std::log(veff2/(VStar_*VStar_))
             + b_*lnPhi;
@@ -78,7 +78,7 @@ void Foam::frictionLaws::rateState::mu
         return;
     }
 
-    // [F12] (L15), in log form for large arguments
+    // [F12], in log form for large arguments
     const scalar q = std::min((muStar_ + b_*lnPhi)/a_, scalar(700));
     const scalar lw = v > 0 ? std::log(v/(2*VStar_)) + q : -GREAT;
     if (lw > 30)

@@ -40,7 +40,7 @@ void Foam::lubricationWeightModels::stribeck::alpha
     scalar& dadv
 ) const
 {
-    // [F19] (L25)
+    // [F19]
     const scalar c = (D_/Db_)/vb_;
     const scalar xi = c*v;
     if (xi <= 0)

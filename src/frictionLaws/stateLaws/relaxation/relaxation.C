@@ -95,7 +95,7 @@ Foam::scalar Foam::frictionStateLaws::relaxation::steadyState
 
 Foam::scalar Foam::frictionStateLaws::relaxation::Gphi(const scalar v) const
 {
-    // L18 for L17: G_phi = 1/(t** phi_ss)
+    // [F22b] for the relaxation law: G_phi = 1/(t** phi_ss)
     return 1/(tRelax_*steadyState(v));
 }
 
