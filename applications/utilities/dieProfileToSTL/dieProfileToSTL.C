@@ -50,7 +50,11 @@ Description
     x = 0 to x = 0 this gives the closed full profile, with the free side
     kept.
 
-    The chordal error of the arcs, r (1 - cos(dtheta/2)), is printed.
+    The chordal error of the arcs, r (1 - cos(dtheta/2)), is printed. The
+    profile itself (segments, freeSide, scale, mirror) is read by
+    profileCurve (src/rigidObstacles), the same code the exact rigid
+    obstacle of type 'profile' answers its queries with, so the STL and a
+    case's contact geometry come from one definition.
 
 \*---------------------------------------------------------------------------*/
 
@@ -59,93 +63,14 @@ Description
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "dictionary.H"
-#include "vector2D.H"
+#include "profileCurve.H"
 #include "point.H"
-#include "DynamicList.H"
 #include "unitConversion.H"
 
 using namespace Foam;
 
 namespace
 {
-
-//- Angle in [0, 2 pi)
-scalar wrap(scalar a)
-{
-    a = std::fmod(a, constant::mathematical::twoPi);
-    return a < 0 ? a + constant::mathematical::twoPi : a;
-}
-
-
-//- Append the points of an arc through start, mid, end (start excluded);
-//  returns the chordal error
-scalar discretiseArc
-(
-    const dictionary& dict,
-    const vector2D& s,
-    const vector2D& m,
-    const vector2D& e,
-    const scalar resolution,
-    DynamicList<vector2D>& pts
-)
-{
-    // Circumcentre of the three points
-    const vector2D b = m - s;
-    const vector2D c = e - s;
-    const scalar d = 2*(b.x()*c.y() - b.y()*c.x());
-    const scalar size = max(mag(b), mag(c));
-
-    if (mag(d) <= 1e-12*sqr(size))
-    {
-        FatalIOErrorInFunction(dict)
-            << "arc: start " << s << ", mid " << m << " and end " << e
-            << " are collinear or coincide in dictionary " << dict.name()
-            << exit(FatalIOError);
-    }
-
-    const vector2D centre
-    (
-        s.x() + (c.y()*magSqr(b) - b.y()*magSqr(c))/d,
-        s.y() + (b.x()*magSqr(c) - c.x()*magSqr(b))/d
-    );
-    const scalar r = mag(s - centre);
-
-    const scalar a0 = std::atan2(s.y() - centre.y(), s.x() - centre.x());
-    const scalar toMid =
-        wrap(std::atan2(m.y() - centre.y(), m.x() - centre.x()) - a0);
-    const scalar toEnd =
-        wrap(std::atan2(e.y() - centre.y(), e.x() - centre.x()) - a0);
-
-    // Counter-clockwise if mid comes before end going counter-clockwise
-    const scalar sweep =
-        toMid < toEnd ? toEnd : -(constant::mathematical::twoPi - toEnd);
-
-    label n = dict.getOrDefault<label>
-    (
-        "nSegments", label(std::ceil(mag(sweep)/resolution - 1e-9))
-    );
-    if (n < 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "keyword 'nSegments': must be >= 1, got " << n
-            << " in dictionary " << dict.name()
-            << exit(FatalIOError);
-    }
-
-    for (label i = 1; i < n; ++i)
-    {
-        const scalar a = a0 + sweep*i/n;
-        pts.append(centre + r*vector2D(std::cos(a), std::sin(a)));
-    }
-    pts.append(e);
-
-    Info<< "    arc: centre " << centre << ", radius " << r
-        << ", sweep " << radToDeg(sweep) << " deg, " << n << " facets"
-        << endl;
-
-    return r*(1 - std::cos(0.5*sweep/n));
-}
-
 
 //- Write one ASCII STL facet
 void writeFacet(OFstream& os, const point& a, const point& b, const point& c)
@@ -203,10 +128,7 @@ int main(int argc, char* argv[])
     const word name(dict.get<word>("name"));
     const scalar zMin(dict.get<scalar>("zMin"));
     const scalar zMax(dict.get<scalar>("zMax"));
-    const scalar scale(dict.getOrDefault<scalar>("scale", 1));
     const scalar resolution(degToRad(dict.get<scalar>("arcResolution")));
-    const bool mirror(dict.getOrDefault<bool>("mirror", false));
-    const word freeSide(dict.get<word>("freeSide"));
 
     if (!(zMax > zMin))
     {
@@ -215,132 +137,29 @@ int main(int argc, char* argv[])
             << ", " << zMax << " in dictionary " << dict.name()
             << exit(FatalIOError);
     }
-    if (!(resolution > 0) || !(scale > 0))
+    if (!(resolution > 0))
     {
         FatalIOErrorInFunction(dict)
-            << "keywords 'arcResolution', 'scale': must be > 0"
-            << " in dictionary " << dict.name()
-            << exit(FatalIOError);
-    }
-    if (freeSide != "left" && freeSide != "right")
-    {
-        FatalIOErrorInFunction(dict)
-            << "keyword 'freeSide': expected left or right, got '"
-            << freeSide << "' in dictionary " << dict.name()
-            << exit(FatalIOError);
+            << "keyword 'arcResolution': must be > 0 in dictionary "
+            << dict.name() << exit(FatalIOError);
     }
 
-    // Walk the segments
-    const PtrList<entry> segments(dict.lookup("segments"));
-    if (segments.empty())
+    const profileCurve curve(dict);
+    for (const profileCurve::segment& s : curve.segments())
     {
-        FatalIOErrorInFunction(dict)
-            << "keyword 'segments': no segments in dictionary " << dict.name()
-            << exit(FatalIOError);
-    }
-
-    // Joining tolerance: 1e-9 of the extent of the segment end points
-    scalar extent = 0;
-    for (const entry& seg : segments)
-    {
-        if (seg.isDict())
+        if (s.isArc())
         {
-            extent = max(extent, mag(seg.dict().get<vector2D>("start")));
-            extent = max(extent, mag(seg.dict().get<vector2D>("end")));
+            Info<< "    arc: centre " << s.centre << ", radius " << s.radius
+                << ", sweep " << radToDeg(s.sweep) << " deg" << endl;
         }
     }
-    const scalar joinTol = 1e-9*max(extent, SMALL);
-
     DynamicList<vector2D> pts;
-    scalar chordal = 0;
-    scalar length = 0;
-
-    for (const entry& seg : segments)
-    {
-        if (!seg.isDict())
-        {
-            FatalIOErrorInFunction(dict)
-                << "keyword 'segments': expected 'line { .. }' or"
-                << " 'arc { .. }', got " << seg.keyword()
-                << " in dictionary " << dict.name()
-                << exit(FatalIOError);
-        }
-        const dictionary& sd = seg.dict();
-        const vector2D s(sd.get<vector2D>("start"));
-        const vector2D e(sd.get<vector2D>("end"));
-
-        if (pts.empty())
-        {
-            pts.append(s);
-        }
-        else if (mag(s - pts.last()) > joinTol)
-        {
-            FatalIOErrorInFunction(sd)
-                << "keyword 'start': " << s << " does not join the previous"
-                << " segment's end " << pts.last() << " in dictionary "
-                << sd.name()
-                << exit(FatalIOError);
-        }
-
-        const label n0 = pts.size();
-        if (seg.keyword() == "line")
-        {
-            if (mag(e - s) <= joinTol)
-            {
-                FatalIOErrorInFunction(sd)
-                    << "line of zero length in dictionary " << sd.name()
-                    << exit(FatalIOError);
-            }
-            pts.append(e);
-        }
-        else if (seg.keyword() == "arc")
-        {
-            chordal = max
-            (
-                chordal,
-                discretiseArc
-                (
-                    sd, pts.last(), sd.get<vector2D>("mid"), e, resolution,
-                    pts
-                )
-            );
-        }
-        else
-        {
-            FatalIOErrorInFunction(sd)
-                << "unknown segment type '" << seg.keyword()
-                << "' (line or arc) in dictionary " << sd.name()
-                << exit(FatalIOError);
-        }
-        for (label i = n0 - 1; i < pts.size() - 1; ++i)
-        {
-            length += mag(pts[i + 1] - pts[i]);
-        }
-    }
-
-    if (mirror)
-    {
-        if (mag(pts.last().x()) > joinTol)
-        {
-            FatalIOErrorInFunction(dict)
-                << "keyword 'mirror': the profile must end on x = 0 to be"
-                << " mirrored, it ends at " << pts.last()
-                << " in dictionary " << dict.name()
-                << exit(FatalIOError);
-        }
-        pts.last().x() = 0;
-        for (label i = pts.size() - 2; i >= 0; --i)
-        {
-            const vector2D m(0 - pts[i].x(), pts[i].y());
-            length += mag(m - pts.last());
-            pts.append(m);
-        }
-    }
+    const scalar chordal = curve.discretise(resolution, pts);
 
     // Extrude and write: quad a b c d = (P_i, zMin) (P_i+1, zMin)
     // (P_i+1, zMax) (P_i, zMax); (a b c), (a c d) have their normal to the
     // right of the direction of travel
-    const bool left = (freeSide == "left");
+    const bool left = curve.freeSideLeft();
     const fileName outDir(caseDir/"constant"/"triSurface");
     mkDir(outDir);
     const fileName outFile(outDir/(name + ".stl"));
@@ -350,12 +169,10 @@ int main(int argc, char* argv[])
     os  << "solid " << name << nl;
     for (label i = 0; i < pts.size() - 1; ++i)
     {
-        const vector2D p0 = scale*pts[i];
-        const vector2D p1 = scale*pts[i + 1];
-        const point a(p0.x(), p0.y(), zMin);
-        const point b(p1.x(), p1.y(), zMin);
-        const point c(p1.x(), p1.y(), zMax);
-        const point d(p0.x(), p0.y(), zMax);
+        const point a(pts[i].x(), pts[i].y(), zMin);
+        const point b(pts[i + 1].x(), pts[i + 1].y(), zMin);
+        const point c(pts[i + 1].x(), pts[i + 1].y(), zMax);
+        const point d(pts[i].x(), pts[i].y(), zMax);
         if (left)
         {
             writeFacet(os, a, c, b);
@@ -370,11 +187,12 @@ int main(int argc, char* argv[])
     os  << "endsolid " << name << nl;
 
     Info<< nl << "Profile: " << pts.size() << " points, length "
-        << scale*length << " m, from " << scale*pts.first() << " to "
-        << scale*pts.last() << nl
-        << "Largest chordal error of the arcs: " << scale*chordal << " m" << nl
+        << curve.length() << " m, from " << pts.first() << " to "
+        << pts.last() << nl
+        << "Largest chordal error of the arcs: " << chordal << " m" << nl
         << "Wrote " << 2*(pts.size() - 1) << " triangles, z in [" << zMin
-        << ", " << zMax << "], free side " << freeSide << ", to " << outFile
+        << ", " << zMax << "], free side "
+        << (left ? "left" : "right") << ", to " << outFile
         << nl << endl;
 
     Info<< "End" << nl << endl;

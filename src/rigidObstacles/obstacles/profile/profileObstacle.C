@@ -1,0 +1,96 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam.
+
+    triboFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <https://www.gnu.org/licenses/>.
+
+    SPDX-License-Identifier: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
+
+#include "profileObstacle.H"
+#include "addToRunTimeSelectionTable.H"
+#include "IFstream.H"
+
+namespace Foam
+{
+namespace rigidObstacles
+{
+    defineTypeNameAndDebug(profileObstacle, 0);
+    addToRunTimeSelectionTable(rigidObstacle, profileObstacle, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::dictionary Foam::rigidObstacles::profileObstacle::profileDict
+(
+    const dictionary& dict,
+    const fileName& caseDir
+)
+{
+    fileName file;
+    if (!dict.readIfPresent("file", file))
+    {
+        return dict;
+    }
+    file.expand();
+    if (!file.isAbsolute())
+    {
+        file = caseDir/file;
+    }
+    IFstream is(file);
+    if (!is.good())
+    {
+        FatalIOErrorInFunction(dict)
+            << "keyword 'file': cannot open the profile dictionary " << file
+            << " named in dictionary " << dict.name() << exit(FatalIOError);
+    }
+    return dictionary(is);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rigidObstacles::profileObstacle::profileObstacle
+(
+    const dictionary& dict,
+    const fileName& caseDir
+)
+:
+    rigidObstacle(dict),
+    curve_(profileDict(dict, caseDir))
+{}
+
+
+// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+bool Foam::rigidObstacles::profileObstacle::nearestInitial
+(
+    const point& x0,
+    const scalar maxDistance,
+    obstaclePoint& cp,
+    const label
+) const
+{
+    const profileCurve::nearestPoint np
+    (
+        curve_.nearest(vector2D(x0.x(), x0.y()))
+    );
+    const point p(np.p.x(), np.p.y(), x0.z());
+    if (mag(x0 - p) > maxDistance)
+    {
+        return false;
+    }
+    cp.p = p;
+    cp.n = vector(np.n.x(), np.n.y(), 0);
+    cp.gap = (x0 - p) & cp.n;
+    cp.hint = np.segmenti;
+    return true;
+}
+
+
+// ************************************************************************* //
