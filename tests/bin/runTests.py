@@ -11,6 +11,7 @@
 # License: GPL-3.0-or-later
 # -----------------------------------------------------------------------------
 import argparse
+import math
 import os
 import re
 import shlex
@@ -19,9 +20,11 @@ import subprocess
 import sys
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "..", "bin", "python"))
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(here, "..", "..", "bin", "python"))
+sys.path.insert(0, here)
 import foamio  # noqa: E402
+import processTools  # noqa: E402
 
 projectDir = os.path.dirname(os.path.dirname(os.path.dirname(
     os.path.abspath(__file__))))
@@ -68,13 +71,14 @@ def runUnit(name, tdir, log):
     log.write(b.stdout)
     if b.returncode != 0 or not os.path.isfile(exe):
         return False, "build failed:\n" + b.stdout[-3000:]
-    r = subprocess.run([exe], cwd=tdir, stdout=subprocess.PIPE,
-                       stderr=subprocess.STDOUT, text=True, timeout=1800)
-    log.write(r.stdout)
-    lines = [l for l in r.stdout.splitlines()
+    rc, out = processTools.run([exe], tdir, 1800)
+    log.write(out)
+    lines = [l for l in out.splitlines()
              if l.strip().startswith(("ok ", "FAILED", "FOAM FATAL"))
              or "checks passed" in l]
-    return r.returncode == 0, "\n".join(lines)
+    if rc == processTools.TIMEOUT:
+        lines.append("timed out after 1800 s")
+    return rc == 0, "\n".join(lines)
 
 
 class SpecError(Exception):
@@ -131,7 +135,8 @@ def evaluate(check, values):
     if q not in values:
         return False, "FAILED  %s: not in the results file" % q
     got = values[q]
-    ok = got == got  # not NaN
+    # nan and inf are never an answer: they fail every check
+    ok = math.isfinite(got)
     if check["op"] == "below":
         ok = ok and got <= check["value"]
         text = "%s: got %.6g, expected <= %.6g" % (q, got, check["value"])
@@ -148,6 +153,58 @@ def evaluate(check, values):
         + "  [" + check["source"] + "]"
 
 
+def gitFiles(src, which):
+    """Files under src that git tracks (which 'tracked') or that are
+    untracked and not ignored ('untracked'), relative to src; None when src
+    is not in a git checkout."""
+    args = ["git", "-C", src, "ls-files", "-z", "--full-name"]
+    if which == "untracked":
+        args += ["--others", "--exclude-standard"]
+    r = subprocess.run(args + ["--", "."], stdout=subprocess.PIPE,
+                       stderr=subprocess.DEVNULL)
+    top = subprocess.run(["git", "-C", src, "rev-parse", "--show-toplevel"],
+                         stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+                         text=True)
+    if r.returncode != 0 or top.returncode != 0:
+        return None
+    root = top.stdout.strip()
+    rel = os.path.relpath(os.path.realpath(src), os.path.realpath(root))
+    prefix = "" if rel == "." else rel + "/"
+    return [f[len(prefix):] for f in r.stdout.decode().split("\0")
+            if f.startswith(prefix)]
+
+
+def copySource(src, dst, log, skip=()):
+    """Copy what git tracks of src to dst (merged into dst), the files as
+    they are in the working tree: run products left in src by an earlier
+    run (time directories, logs, derived cases that Allclean does not know)
+    must not reach the test. Untracked files that git does not ignore are
+    listed in the log and skipped ('git add' a new file to test it).
+    Outside a git checkout: the whole folder, then its Allclean."""
+    tracked = gitFiles(src, "tracked")
+    if tracked is None:
+        shutil.copytree(src, dst, symlinks=True, dirs_exist_ok=True,
+                        ignore=lambda d, names: [n for n in names
+                                                 if n in skip])
+        if os.path.isfile(os.path.join(dst, "Allclean")):
+            subprocess.run(["bash", "./Allclean"], cwd=dst,
+                           stdout=subprocess.DEVNULL,
+                           stderr=subprocess.DEVNULL)
+        return
+    os.makedirs(dst, exist_ok=True)
+    for f in tracked:
+        s = os.path.join(src, f)
+        if f in skip or not os.path.lexists(s):
+            continue            # deleted in the working tree
+        d = os.path.join(dst, f)
+        os.makedirs(os.path.dirname(d), exist_ok=True)
+        shutil.copy2(s, d, follow_symlinks=False)
+    untracked = [f for f in gitFiles(src, "untracked") or [] if f not in skip]
+    if untracked:
+        log.write("runTests: %d untracked file(s) of %s not copied: %s\n"
+                  % (len(untracked), src, " ".join(untracked[:20])))
+
+
 def runCase(name, group, tdir, log):
     spec = parseSpec(os.path.join(tdir, "spec"))
     work = os.path.join(resultsDir, group, name)
@@ -157,35 +214,23 @@ def runCase(name, group, tdir, log):
     if not os.path.isdir(src):
         raise SpecError("%s/spec: tutorial folder '%s' not found"
                         % (tdir, src))
-    shutil.copytree(src, work, symlinks=True)
-    if os.path.isfile(os.path.join(work, "Allclean")):
-        # start from a clean tutorial, whatever was run in the source tree
-        subprocess.run(["bash", "./Allclean"], cwd=work,
-                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    copySource(src, work, log, skip=("spec",))
     if "tutorial" in spec:
         # the test folder's own files (scripts, dictionaries) come on top
-        for f in os.listdir(tdir):
-            if f != "spec":
-                s = os.path.join(tdir, f)
-                d = os.path.join(work, f)
-                if os.path.isdir(s):
-                    shutil.copytree(s, d, symlinks=True, dirs_exist_ok=True)
-                else:
-                    shutil.copy2(s, d)
+        copySource(tdir, work, log, skip=("spec",))
     env = dict(os.environ, TRIBOFOAM_TEST="1")
-    try:
-        r = subprocess.run(["bash", "-c", spec["command"]], cwd=work,
-                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                           text=True, timeout=float(spec["timeout"]), env=env)
-    except subprocess.TimeoutExpired:
-        return False, "timed out after %s s" % spec["timeout"]
-    log.write(r.stdout)
+    rc, out = processTools.run(["bash", "-c", spec["command"]], work,
+                               float(spec["timeout"]), env)
+    log.write(out)
+    if rc == processTools.TIMEOUT:
+        return False, "timed out after %s s (every process of the " \
+            "command killed)" % spec["timeout"]
     lines = []
     ok = True
-    if r.returncode != 0:
+    if rc != 0:
         ok = False
         lines.append("command '%s' exited with %d:\n%s" % (
-            spec["command"], r.returncode, r.stdout[-3000:]))
+            spec["command"], rc, out[-3000:]))
     resPath = os.path.join(work, spec["results"])
     if not os.path.isfile(resPath):
         return False, "\n".join(lines + ["no results file %s" % resPath])

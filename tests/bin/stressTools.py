@@ -5,14 +5,18 @@
 # of three outcomes:
 #   converged-correct  exit 0, endTime reached, no nan/inf in any written
 #                      file, and every physical check of the variant holds;
-#   stopped-cleanly    non-zero exit with a FOAM FATAL message; when the
-#                      message names the last converged time, that time is
-#                      the latest time directory; its fields are finite and
-#                      no file holds nan/inf;
+#   stopped-cleanly    the solver's own stop and nothing else: non-zero exit
+#                      with its FOAM FATAL ERROR message 'The step to time
+#                      .. did not converge after .. cut-backs .. The last
+#                      converged time, T, is written'; T is the latest time
+#                      directory, its fields are finite and no file holds
+#                      nan/inf;
 #   FAIL               anything else: nan/inf on disk, a crash (signal), a
-#                      hang (timeout), a wrong answer, a run that stopped
-#                      without a message, or a variant that must converge
-#                      and did not.
+#                      hang (timeout; every process of the run is killed),
+#                      a wrong answer, a run that stopped without a message
+#                      or with any other fatal error (a dictionary or
+#                      set-up error included), or a variant that must
+#                      converge and did not.
 # classify() decides; Matrix prints the variant x outcome table into the
 # test log and writes the counts to results.dat. The checks on the contact
 # state are in contactChecks.py.
@@ -23,13 +27,14 @@ import math
 import os
 import re
 import shutil
-import subprocess
 import sys
 
 projectDir = os.environ.get("TRIBOFOAM_DIR") or os.path.abspath(
     os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 sys.path.insert(0, os.path.join(projectDir, "bin", "python"))
 import foamio  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import processTools  # noqa: E402
 
 CONVERGED = "converged-correct"
 STOPPED = "stopped-cleanly"
@@ -39,21 +44,13 @@ FAIL = "FAIL"
 # ------------------------------------------------------------------ running
 def run(args, cwd, log, timeout=120):
     """Run an OpenFOAM command in cwd, output (stdout + stderr) to log.
-    Returns (exit code or 'timeout', output)."""
+    Returns (exit code or 'timeout', output); on a time-out every process
+    the command started is stopped (processTools)."""
     if shutil.which(args[0]) is None:
         # not started by tests/Alltest: set the project environment up
         args = ["bash", "-c", '. "%s/etc/bashrc" > /dev/null 2>&1; '
                 'exec "$0" "$@"' % projectDir] + list(args)
-    try:
-        r = subprocess.run(args, cwd=cwd, stdout=subprocess.PIPE,
-                           stderr=subprocess.STDOUT, text=True,
-                           timeout=timeout)
-        rc, out = r.returncode, r.stdout
-    except subprocess.TimeoutExpired as e:
-        out = e.stdout or ""
-        if isinstance(out, bytes):
-            out = out.decode(errors="replace")
-        rc, out = "timeout", out + "\n[timed out after %d s]\n" % timeout
+    rc, out = processTools.run(args, cwd, timeout)
     with open(os.path.join(cwd, log), "a") as f:
         f.write(out)
     return rc, out
@@ -140,6 +137,14 @@ def finiteDir(path):
     return True
 
 
+# The solver's own stop (largeStrainSolidFoam.C): a step that does not
+# converge after the allowed cut-backs, the last converged time written
+cleanStop = re.compile(
+    r"^FOAM FATAL ERROR\b[^\n]*\n(?:.*\n)*?The step to time \S+ did not "
+    r"converge after \d+ cut-backs[^\n]*\n(?:.*\n)*?The last converged "
+    r"time, (\S+?), is written", re.M)
+
+
 def fatalMessage(out):
     i = out.find("FOAM FATAL")
     return out[i:] if i >= 0 else ""
@@ -176,22 +181,27 @@ def classify(case, rc, out, endTime, errors, mustConverge=False):
         fatal = fatalMessage(out)
         if not fatal:
             return FAIL, "crash: exit %s without a FOAM FATAL message" % rc
+        stop = cleanStop.search(fatal)
+        if not stop:
+            # a dictionary, set-up or any other fatal error is a failure,
+            # whatever the variant
+            lines = [l.strip() for l in fatal.splitlines()[1:] if l.strip()]
+            return FAIL, "fatal error, not the solver's clean stop: %s" % (
+                lines[0][:110] if lines else fatal[:110])
+        lastT = float(stop.group(1))
+        if abs(lastT - latestT) > 1e-9*max(1, latestT):
+            return FAIL, ("reported last converged time %s is not the "
+                          "latest directory %s" % (stop.group(1), latest))
         if not finiteDir(os.path.join(case, latest)):
             return FAIL, "latest time %s not finite" % latest
-        m = re.search(r"last converged time,\s+(\S+?),\s+is written", fatal)
-        if m and abs(float(m.group(1)) - latestT) > 1e-9*max(1, latestT):
-            return FAIL, ("reported last converged time %s is not the "
-                          "latest directory %s" % (m.group(1), latest))
-        if "did not converge" in fatal and not m:
-            return FAIL, "no last converged time in the message"
         if mustConverge:
             return FAIL, "must converge; stopped at %s" % latest
         if errors:
             return FAIL, "wrong answer before it stopped: " + "; ".join(
                 errors)
-        lines = [l.strip() for l in fatal.splitlines()[1:] if l.strip()]
-        return STOPPED, "at t = %s: %s" % (
-            latest, lines[0][:110] if lines else "")
+        return STOPPED, "at t = %s: %s" % (latest, next(
+            l for l in stop.group(0).splitlines()
+            if l.startswith("The step"))[:110])
     if abs(latestT - endTime) > 1e-9*max(1, endTime):
         return FAIL, "exit 0 but the latest time is %s" % latest
     if errors:

@@ -335,17 +335,22 @@ void Foam::frictionalContactFvPatchVectorField::write(Ostream& os) const
     os.writeEntry("contactSmoothing", contactSmoothing_);
     os.writeEntry("searchRefreshFraction", searchRefreshFraction_);
 
-    // Face state for restart
+    // Face state for restart; none when it is not the law's (a utility
+    // without the law, e.g. decomposePar of time 0: written zeros would be
+    // read back as a contact age of 0 instead of the fresh contact's)
     using namespace frictionStateEntries;
-    for (const auto& e : vectors)
+    if (stateKnown_)
     {
-        member(state_, e.second)().writeEntry(e.first, os);
+        for (const auto& e : vectors)
+        {
+            member(state_, e.second)().writeEntry(e.first, os);
+        }
+        for (const auto& e : scalars)
+        {
+            member(state_, e.second)().writeEntry(e.first, os);
+        }
+        status(state_)().writeEntry(statusKeyword, os);
     }
-    for (const auto& e : scalars)
-    {
-        member(state_, e.second)().writeEntry(e.first, os);
-    }
-    status(state_)().writeEntry(statusKeyword, os);
     dissipation_.writeEntry("dissipatedEnergy", os);
     writeEntry("value", os);
 }

@@ -86,6 +86,7 @@ void Foam::frictionalContactFvPatchVectorField::copyFrom
     contactSmoothing_ = ptf.contactSmoothing_;
     searchRefreshFraction_ = ptf.searchRefreshFraction_;
     state_ = ptf.state_;
+    stateKnown_ = ptf.stateKnown_;
     search_ = ptf.search_;
     contactPressure_ = ptf.contactPressure_;
     nominalContactPressure_ = ptf.nominalContactPressure_;
@@ -143,6 +144,7 @@ void Foam::frictionalContactFvPatchVectorField::readState
     const frictionState fresh =
         law_.valid() ? law_->initialState() : frictionState();
     state_.setSize(n, fresh);
+    stateKnown_ = law_.valid();
     search_.setSize(n, obstacleSearch());
     contactPressure_.setSize(n, 0);
     nominalContactPressure_.setSize(n, 0);
@@ -167,6 +169,7 @@ void Foam::frictionalContactFvPatchVectorField::readState
         {
             state_[i].status = label(status[i] + 0.5);
         }
+        stateKnown_ = true;
     }
     if (dict.found("dissipatedEnergy"))
     {
@@ -271,6 +274,7 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     searchDistance_(GREAT),
     contactSmoothing_(0),
     searchRefreshFraction_(0.2),
+    stateKnown_(false),
     normalForce_(Zero),
     frictionForce_(Zero),
     totalDissipation_(0),
@@ -421,6 +425,7 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
 
     const label n = mapper.size();
     state_.setSize(n);
+    stateKnown_ = ptf.stateKnown_;
     search_.setSize(n, obstacleSearch());
     contactPressure_.setSize(n, 0);
     nominalContactPressure_.setSize(n, 0);

@@ -34,7 +34,15 @@ t = foamio.latestTime(case)
 ux = [d[0] for d in foamio.readPatchField(os.path.join(case, t, "D"), "xMax")]
 stretch = 1 + sum(ux)/len(ux)/L
 err = abs(stretch - exact)/(1 - exact)
+# the written Cauchy stress: -p along the bar, 0 otherwise; sigmaEq = p
+sig = foamio.readInternalField(os.path.join(case, t, "sigma"))
+sigEq = foamio.readInternalField(os.path.join(case, t, "sigmaEq"), len(sig))
+sigErr = max(max(abs(s[0] + p), *(abs(c) for c in s[1:])) for s in sig)/p
+sigEqErr = max(abs(e - p) for e in sigEq)/p
 print("followerCompression: stretch %.8f, exact %.8f (Cauchy stress -p); "
-      "error %.2e of the shortening" % (stretch, exact, err))
+      "error %.2e of the shortening; written sigma %.2e, sigmaEq %.2e off"
+      % (stretch, exact, err, sigErr, sigEqErr))
 with open(out, "a") as f:
     f.write("followerPressureRelError %.10g\n" % err)
+    f.write("followerSigmaRelError %.10g\n" % sigErr)
+    f.write("followerSigmaEqRelError %.10g\n" % sigEqErr)

@@ -56,21 +56,33 @@ c = radiusOfOuterDisplacement(ub)
 pTheory = pressureOfRadius(c)
 cExpected = 0.015
 
-# Plastic zone seen directly: outermost cell centre with plastic strain
+# The plastic zone seen in the written fields, independently of u(b): its
+# edge (half way between the outermost cell with plastic strain and the
+# innermost without) against c = 15 mm, and sigmaEq = sigma_y in it (cells
+# a cell's width inside; perfectly plastic: the Cauchy equivalent stress
+# is the yield stress up to the volume change, 1e-4 at nu = 0.49)
 C = foamio.readInternalField(os.path.join(case, "0", "C"))
 eps = foamio.readInternalField(os.path.join(case, t, "epsilonPEq"), len(C))
-rPlastic = max(math.hypot(x, y) for (x, y, z), e in zip(C, eps) if e > 1e-9)
+sigEq = foamio.readInternalField(os.path.join(case, t, "sigmaEq"), len(C))
+r = [math.hypot(x, y) for x, y, z in C]
+rPlastic = max(ri for ri, e in zip(r, eps) if e > 0)
+rElastic = min(ri for ri, e in zip(r, eps) if e <= 0)
+h = (b - a)/len(set(round(ri, 9) for ri in r))
+edge = 0.5*(rPlastic + rElastic)
 
 res = {
     "plasticRadius": c,
     "plasticRadiusError": abs(c - cExpected)/cExpected,
-    "pressureRelError": abs(pApplied - pTheory)/pApplied,
-    "outermostPlasticCellRadius": rPlastic,
+    "plasticZoneEdgeRelError": abs(edge - cExpected)/cExpected,
+    "plasticSigmaEqRelError": max(abs(s/sy - 1) for ri, s in zip(r, sigEq)
+                                  if ri < cExpected - h),
+    "pOfPlasticRadiusRelError": abs(pApplied - pTheory)/pApplied,
     "uOuterSpread": (max(ur) - min(ur))/ub,
 }
 print("thickCylinder plastic: c from u(b) = %.4f mm (theory 15 mm, error "
-      "%.2f %%), p(c) error %.2f %%, outermost plastic cell at r = %.3f mm"
-      % (c*1e3, 100*res["plasticRadiusError"], 100*res["pressureRelError"],
-         rPlastic*1e3))
+      "%.2f %%); the plastic strain ends between r = %.3f and %.3f mm "
+      "(edge %.2e off 15 mm); sigmaEq = sigma_y in the plastic zone to %.2e"
+      % (c*1e3, 100*res["plasticRadiusError"], rPlastic*1e3, rElastic*1e3,
+         res["plasticZoneEdgeRelError"], res["plasticSigmaEqRelError"]))
 foamio.writeResults(os.path.join(case, "results.dat"), res,
                     "thick cylinder, elastic-perfectly plastic")
