@@ -10,17 +10,15 @@ License
 
 void Foam::symmetricEigen::planeProblem
 (
-    const symmTensor& S,
+    const scalar a,
+    const scalar b,
+    const scalar c,
     const vector& u,
     const vector& w
 )
 {
     // [[a b] [b c]] = m I + [[h b] [b -h]]: eigenvalues m +- r; the vector
     // of m + r is (h + r, b) or (b, r - h), whichever has no cancellation
-    const vector Su(S & u);
-    const scalar a = u & Su;
-    const scalar b = w & Su;
-    const scalar c = w & (S & w);
     const scalar m = 0.5*(a + c);
     const scalar h = 0.5*(a - c);
     const scalar r = Foam::sqrt(h*h + b*b);
@@ -42,9 +40,9 @@ void Foam::symmetricEigen::planeProblem
         x = h + r;
         y = b;
     }
-    const scalar l = Foam::sqrt(x*x + y*y);
-    x /= l;
-    y /= l;
+    const scalar l = 1/Foam::sqrt(x*x + y*y);
+    x *= l;
+    y *= l;
     vectors[1] = x*u + y*w;
     vectors[2] = x*w - y*u;
 }
@@ -67,17 +65,26 @@ Foam::symmetricEigen::symmetricEigen(const symmTensor& S)
     // Work on the deviator: its entries are the spread of the eigenvalues,
     // so round-off is relative to the spread, not to the mean
     const scalar mean = tr(S)/3;
-    const symmTensor D(dev(S));
 
-    if (S.xz() == 0 && S.yz() == 0)
+    // Plane strain: z is an eigenvector, zz its eigenvalue. The 2-D
+    // solver's tensors carry xz, yz of round-off size (1e-20 of the trace
+    // measured: cell centres differ in z by round-off); dropping entries
+    // below 1e-15 of the diagonal changes ln S by their size, no more
+    const scalar offPlane = mag(S.xz()) + mag(S.yz());
+    if (offPlane <= 1e-15*(mag(S.xx()) + mag(S.yy()) + mag(S.zz())))
     {
-        // Plane strain: z is an eigenvector, zz its eigenvalue
         vectors[0] = vector(0, 0, 1);
-        planeProblem(D, vector(1, 0, 0), vector(0, 1, 0));
+        planeProblem
+        (
+            S.xx() - mean, S.xy(), S.yy() - mean,
+            vector(1, 0, 0), vector(0, 1, 0)
+        );
         values += mean*vector::one;
         values[0] = S.zz();
         return;
     }
+
+    const symmTensor D(dev(S));
 
     // [S7c] 1. The eigenvalue of B = D/p farthest from the others:
     // 2 cos(phi) (the largest) when det(B)/2 >= 0, else
@@ -90,7 +97,7 @@ Foam::symmetricEigen::symmetricEigen(const symmTensor& S)
         values = vector(S.xx(), S.yy(), S.zz());
         return;
     }
-    const symmTensor B(D/p);
+    const symmTensor B(D*(1/p));
     const scalar r = min(max(det(B)/2, scalar(-1)), scalar(1));
     const scalar phi = Foam::acos(r)/3;
     const scalar lambda =
@@ -113,7 +120,7 @@ Foam::symmetricEigen::symmetricEigen(const symmTensor& S)
     {
         c = c12;
     }
-    const vector v(c/mag(c));
+    const vector v(c*(1/mag(c)));
     vectors[0] = v;
     values[0] = v & (D & v);
 
@@ -121,10 +128,12 @@ Foam::symmetricEigen::symmetricEigen(const symmTensor& S)
     const vector u
     (
         mag(v.x()) > mag(v.y())
-      ? vector(-v.z(), 0, v.x())/Foam::sqrt(sqr(v.x()) + sqr(v.z()))
-      : vector(0, v.z(), -v.y())/Foam::sqrt(sqr(v.y()) + sqr(v.z()))
+      ? vector(-v.z(), 0, v.x())*(1/Foam::sqrt(sqr(v.x()) + sqr(v.z())))
+      : vector(0, v.z(), -v.y())*(1/Foam::sqrt(sqr(v.y()) + sqr(v.z())))
     );
-    planeProblem(D, u, v ^ u);
+    const vector w(v ^ u);
+    const vector Du(D & u);
+    planeProblem(u & Du, w & Du, w & (D & w), u, w);
     values += mean*vector::one;
 }
 

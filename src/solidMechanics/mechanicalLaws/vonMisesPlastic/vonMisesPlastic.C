@@ -57,6 +57,7 @@ Foam::scalar Foam::mechanicalLaws::vonMisesPlastic::plasticMultiplier
 (
     const scalar qTrial,
     const scalar epsP,
+    scalar sigmaY,
     scalar& H
 ) const
 {
@@ -64,7 +65,8 @@ Foam::scalar Foam::mechanicalLaws::vonMisesPlastic::plasticMultiplier
     // decreasing, g(0) > 0 and g(qTrial/3G) < 0, so Newton's iteration with
     // the exact slope, kept inside the shrinking bracket by bisection,
     // always converges (for a concave curve, such as Swift's, from below
-    // without overshoot; for a table, exactly once in the final segment)
+    // without overshoot; for a table, exactly once in the final segment).
+    // On entry sigmaY and H are the curve at dg = 0
     const scalar threeG = 3*mu();
     scalar lo = 0;
     scalar hi = qTrial/threeG;
@@ -74,7 +76,11 @@ Foam::scalar Foam::mechanicalLaws::vonMisesPlastic::plasticMultiplier
 
     for (label iter = 0; iter < 200; ++iter)
     {
-        const scalar g = qTrial - threeG*dg - yieldStress_.value(epsP + dg, H);
+        if (iter)
+        {
+            sigmaY = yieldStress_.value(epsP + dg, H);
+        }
+        const scalar g = qTrial - threeG*dg - sigmaY;
 
         if (mag(g) <= tol)
         {
@@ -149,11 +155,16 @@ bool Foam::mechanicalLaws::vonMisesPlastic::returnMap
 
     // The curve does not decrease: below the initial yield stress no pow
     // or table lookup is needed
-    if (qTrial > initialYield_ && qTrial > yieldStress(old.epsilonP))
+    scalar H = 0;
+    const scalar sigmaY =
+        qTrial > initialYield_
+      ? yieldStress_.value(old.epsilonP, H)
+      : initialYield_;
+
+    if (qTrial > sigmaY)
     {
         // [S7] radial return
-        scalar H;
-        r.dGamma = plasticMultiplier(qTrial, old.epsilonP, H);
+        r.dGamma = plasticMultiplier(qTrial, old.epsilonP, sigmaY, H);
         r.theta = 1 - 3*G*r.dGamma/qTrial;
         r.thetaBar = 1/(1 + H/(3*G)) - (1 - r.theta);
     }
