@@ -58,7 +58,8 @@ Foam::scalar Foam::mechanicalLaws::vonMisesPlastic::plasticMultiplier
     const scalar qTrial,
     const scalar epsP,
     scalar sigmaY,
-    scalar& H
+    scalar& H,
+    const bool slopeAtRoot
 ) const
 {
     // [S7]: g(dg) = qTrial - 3 G dg - sigmaY(epsP + dg) is strictly
@@ -88,11 +89,21 @@ Foam::scalar Foam::mechanicalLaws::vonMisesPlastic::plasticMultiplier
         }
         if (g > 0) { lo = dg; } else { hi = dg; }
 
-        scalar next = dg + g/(threeG + H);
+        const scalar step = g/(threeG + H);
+        scalar next = dg + step;
 
         if (!(next > lo && next < hi))
         {
             next = 0.5*(lo + hi);
+        }
+        else if (mag(step) <= 1e-8*next)
+        {
+            // A Newton step this small leaves an error of
+            // step^2 |sigmaY''|/(2 (3G + H)), below 1e-16 dg for any curve
+            // with |sigmaY''| dg < 3G: accepted without evaluating the
+            // curve again (one pow less per plastic update for Swift)
+            dg = next;
+            break;
         }
         if (mag(next - dg) <= 1e-16*max(dg, SMALL))
         {
@@ -102,8 +113,10 @@ Foam::scalar Foam::mechanicalLaws::vonMisesPlastic::plasticMultiplier
         dg = next;
     }
 
-    // The slope where the iteration stopped
-    yieldStress_.value(epsP + dg, H);
+    if (slopeAtRoot)
+    {
+        yieldStress_.value(epsP + dg, H);
+    }
     return dg;
 }
 
@@ -112,7 +125,8 @@ bool Foam::mechanicalLaws::vonMisesPlastic::returnMap
 (
     const tensor& F,
     const materialState& old,
-    returnMapping& r
+    returnMapping& r,
+    const bool withTangent
 ) const
 {
     if (!admissible(F))
@@ -138,9 +152,9 @@ bool Foam::mechanicalLaws::vonMisesPlastic::returnMap
     // Principal logarithmic elastic strains
     const vector eps
     (
-        0.5*Foam::log(lambda.x()),
-        0.5*Foam::log(lambda.y()),
-        0.5*Foam::log(lambda.z())
+        0.5*symmetricEigen::log(lambda.x()),
+        0.5*symmetricEigen::log(lambda.y()),
+        0.5*symmetricEigen::log(lambda.z())
     );
     r.volStrain = eps.x() + eps.y() + eps.z();
     r.devEps = eps - r.volStrain/3*vector::one;
@@ -164,9 +178,13 @@ bool Foam::mechanicalLaws::vonMisesPlastic::returnMap
     if (qTrial > sigmaY)
     {
         // [S7] radial return
-        r.dGamma = plasticMultiplier(qTrial, old.epsilonP, sigmaY, H);
+        r.dGamma =
+            plasticMultiplier(qTrial, old.epsilonP, sigmaY, H, withTangent);
         r.theta = 1 - 3*G*r.dGamma/qTrial;
-        r.thetaBar = 1/(1 + H/(3*G)) - (1 - r.theta);
+        if (withTangent)
+        {
+            r.thetaBar = 1/(1 + H/(3*G)) - (1 - r.theta);
+        }
     }
 
     r.tau = 2*G*r.theta*r.devEps + bulkModulus()*r.volStrain*vector::one;
@@ -256,7 +274,7 @@ Foam::tensor Foam::mechanicalLaws::vonMisesPlastic::stressAndTangent
 ) const
 {
     returnMapping r;
-    if (!returnMap(F, old, r))
+    if (!returnMap(F, old, r, true))
     {
         // Not evaluated: the elastic tangent keeps a matrix invertible
         updated = old;
