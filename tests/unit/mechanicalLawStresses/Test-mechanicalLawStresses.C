@@ -4,7 +4,7 @@ License
 
 Description
     Stresses of the mechanical laws against closed forms (doc/theory.md
-    [S3]-[S8], [V3], [V4]):
+    [S3]-[S8], [V3], [V8]):
     - Hooke: P = lambda tr(eps) I + 2 mu eps with eps = sym(F - I);
     - neo-Hookean: uniaxial stretch (P11, P22 of [V3]) and hydrostatic
       stretch, P = (mu (s - 1/s) + 3 lambda ln(s)/s) I;
@@ -12,7 +12,7 @@ Description
       hydrostatic stretch without plastic flow, uniaxial stress to a
       logarithmic strain of 0.8 with Swift hardening: Kirchhoff stress
       tau = sigma_y(epsP), epsP = ln(l) - tau/E, lateral
-      ln(l2) = -nu tau/E - epsP/2 ([V4]; one step gives the same answer);
+      ln(l2) = -nu tau/E - epsP/2 ([V8]; one step gives the same answer);
       objectivity P(QF) = Q P(F) with the same updated state; plastic
       incompressibility det(Cp^-1) = 1 along a non-proportional 3-D path;
       the committed state lies on the yield surface.
@@ -146,7 +146,7 @@ int main()
                 3*K*Foam::log(st)/st*tensor::I), 0, 1e-14);
     }
 
-    Info<< "Finite-strain J2: uniaxial stress with Swift hardening [V4]"
+    Info<< "Finite-strain J2: uniaxial stress with Swift hardening [V8]"
         << endl;
     {
         autoPtr<mechanicalLaw> law

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # Homogeneous compression of a Swift-hardening cube: the computed state at
-# the end of the load against the exact one (doc/theory.md [V4]). Usage:
+# the end of the load against the exact one (doc/theory.md [V8]). Usage:
 #   check.py <case> <nominal stress> [rotated]   appends to <case>/results.dat
 # With 'rotated' the case is the copy turned by exactCompression.rotation()
 # and its displacements and positions are turned back first.

@@ -1,5 +1,5 @@
 # Homogeneous uniaxial compression of a finite-strain J2 solid with Swift
-# hardening (doc/theory.md [V4]): the exact state, elasticity included, and
+# hardening (doc/theory.md [V8]): the exact state, elasticity included, and
 # the rotation of the rotated copy of the case. Used by check.py and
 # makeRotated.py. License: GPL-3.0-or-later
 import math
