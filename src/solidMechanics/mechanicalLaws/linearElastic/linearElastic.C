@@ -36,4 +36,17 @@ Foam::tensor Foam::mechanicalLaws::linearElastic::stress
 }
 
 
+Foam::tensor Foam::mechanicalLaws::linearElastic::stressAndTangent
+(
+    const tensor& F,
+    const materialState& old,
+    materialState& updated,
+    stressTangent& dPdF
+) const
+{
+    hookeTangent(dPdF);
+    return stress(F, old, updated);
+}
+
+
 // ************************************************************************* //

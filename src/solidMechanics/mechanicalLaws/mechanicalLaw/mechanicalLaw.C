@@ -46,6 +46,23 @@ Foam::scalar Foam::mechanicalLaw::readBounded
 }
 
 
+void Foam::mechanicalLaw::hookeTangent(stressTangent& dPdF) const
+{
+    const scalar l = lambda();
+    const scalar m = mu();
+    dPdF.setZero();
+    for (direction i = 0; i < 3; ++i)
+    {
+        for (direction j = 0; j < 3; ++j)
+        {
+            dPdF(4*i, 4*j) += l;
+            dPdF(3*i + j, 3*i + j) += m;
+            dPdF(3*i + j, 3*j + i) += m;
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::mechanicalLaw::mechanicalLaw(const dictionary& dict)

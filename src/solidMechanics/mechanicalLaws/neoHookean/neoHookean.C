@@ -43,4 +43,52 @@ Foam::tensor Foam::mechanicalLaws::neoHookean::stress
 }
 
 
+Foam::tensor Foam::mechanicalLaws::neoHookean::stressAndTangent
+(
+    const tensor& F,
+    const materialState& old,
+    materialState& updated,
+    stressTangent& dPdF
+) const
+{
+    updated = old;
+
+    if (!admissible(F))
+    {
+        // Not evaluated: the elastic tangent keeps a matrix invertible
+        hookeTangent(dPdF);
+        return rejectedStress();
+    }
+
+    // [S4] with d(F^-T)_ij/dF_kl = -Finv_jk Finv_li and
+    // d(ln J)/dF_kl = Finv_lk:
+    // dP_ij/dF_kl = mu d_ik d_jl + (mu - lambda ln J) Finv_jk Finv_li
+    //             + lambda Finv_ji Finv_lk
+    const tensor Finv(inv(F));
+    const scalar lnJ = Foam::log(det(F));
+    const scalar m = mu();
+    const scalar l = lambda();
+    const scalar c = m - l*lnJ;
+    for (direction i = 0; i < 3; ++i)
+    {
+        for (direction j = 0; j < 3; ++j)
+        {
+            for (direction k = 0; k < 3; ++k)
+            {
+                for (direction q = 0; q < 3; ++q)
+                {
+                    dPdF(3*i + j, 3*k + q) =
+                        (i == k && j == q ? m : 0)
+                      + c*Finv[3*j + k]*Finv[3*q + i]
+                      + l*Finv[3*j + i]*Finv[3*q + k];
+                }
+            }
+        }
+    }
+
+    const tensor FinvT(Finv.T());
+    return m*(F - FinvT) + l*lnJ*FinvT;
+}
+
+
 // ************************************************************************* //

@@ -4,7 +4,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "vonMisesPlastic.H"
-#include "symmetricEigen.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -57,12 +56,18 @@ void Foam::mechanicalLaws::vonMisesPlastic::checkHardening
 Foam::scalar Foam::mechanicalLaws::vonMisesPlastic::plasticMultiplier
 (
     const scalar qTrial,
-    const scalar epsP
+    const scalar epsP,
+    scalar sigmaY,
+    scalar& H,
+    const bool slopeAtRoot
 ) const
 {
     // [S7]: g(dg) = qTrial - 3 G dg - sigmaY(epsP + dg) is strictly
-    // decreasing, g(0) > 0 and g(qTrial/3G) < 0, so a Newton iteration kept
-    // inside the shrinking bracket by bisection always converges.
+    // decreasing, g(0) > 0 and g(qTrial/3G) < 0, so Newton's iteration with
+    // the exact slope, kept inside the shrinking bracket by bisection,
+    // always converges (for a concave curve, such as Swift's, from below
+    // without overshoot; for a table, exactly once in the final segment).
+    // On entry sigmaY and H are the curve at dg = 0
     const scalar threeG = 3*mu();
     scalar lo = 0;
     scalar hi = qTrial/threeG;
@@ -72,8 +77,11 @@ Foam::scalar Foam::mechanicalLaws::vonMisesPlastic::plasticMultiplier
 
     for (label iter = 0; iter < 200; ++iter)
     {
-        const scalar sy = yieldStress(epsP + dg);
-        const scalar g = qTrial - threeG*dg - sy;
+        if (iter)
+        {
+            sigmaY = yieldStress_.value(epsP + dg, H);
+        }
+        const scalar g = qTrial - threeG*dg - sigmaY;
 
         if (mag(g) <= tol)
         {
@@ -81,22 +89,143 @@ Foam::scalar Foam::mechanicalLaws::vonMisesPlastic::plasticMultiplier
         }
         if (g > 0) { lo = dg; } else { hi = dg; }
 
-        const scalar h = 1e-7*(epsP + dg) + 1e-10;
-        const scalar H = (yieldStress(epsP + dg + h) - sy)/h;
-        scalar next = dg + g/(threeG + max(H, scalar(0)));
+        const scalar step = g/(threeG + H);
+        scalar next = dg + step;
 
         if (!(next > lo && next < hi))
         {
             next = 0.5*(lo + hi);
         }
+        else if (mag(step) <= 1e-8*next)
+        {
+            // A Newton step this small leaves an error of
+            // step^2 |sigmaY''|/(2 (3G + H)), below 1e-16 dg for any curve
+            // with |sigmaY''| dg < 3G: accepted without evaluating the
+            // curve again (one pow less per plastic update for Swift)
+            dg = next;
+            break;
+        }
         if (mag(next - dg) <= 1e-16*max(dg, SMALL))
         {
-            return next;
+            dg = next;
+            break;
         }
         dg = next;
     }
 
+    if (slopeAtRoot)
+    {
+        yieldStress_.value(epsP + dg, H);
+    }
     return dg;
+}
+
+
+bool Foam::mechanicalLaws::vonMisesPlastic::returnMap
+(
+    const tensor& F,
+    const materialState& old,
+    returnMapping& r,
+    const bool withTangent
+) const
+{
+    if (!admissible(F))
+    {
+        return false;
+    }
+
+    // [S6] elastic predictor: trial left Cauchy-Green be = F Cp^-1 F^T
+    const tensor A(F & old.CpInv);
+    const symmTensor beTrial
+    (
+        A.x() & F.x(), A.x() & F.y(), A.x() & F.z(),
+                       A.y() & F.y(), A.y() & F.z(),
+                                      A.z() & F.z()
+    );
+    r.trial = symmetricEigen(beTrial);
+    const vector& lambda = r.trial.values;
+    if (!(cmptMin(lambda) > 0))
+    {
+        return false;
+    }
+
+    // Principal logarithmic elastic strains
+    const vector eps
+    (
+        0.5*symmetricEigen::log(lambda.x()),
+        0.5*symmetricEigen::log(lambda.y()),
+        0.5*symmetricEigen::log(lambda.z())
+    );
+    r.volStrain = eps.x() + eps.y() + eps.z();
+    r.devEps = eps - r.volStrain/3*vector::one;
+
+    // [S5] Hencky: trial von Mises stress
+    const scalar G = mu();
+    const scalar qTrial = Foam::sqrt(1.5)*2*G*mag(r.devEps);
+
+    r.theta = 1;
+    r.thetaBar = 0;
+    r.dGamma = 0;
+
+    // The curve does not decrease: below the initial yield stress no pow
+    // or table lookup is needed
+    scalar H = 0;
+    const scalar sigmaY =
+        qTrial > initialYield_
+      ? yieldStress_.value(old.epsilonP, H)
+      : initialYield_;
+
+    if (qTrial > sigmaY)
+    {
+        // [S7] radial return
+        r.dGamma =
+            plasticMultiplier(qTrial, old.epsilonP, sigmaY, H, withTangent);
+        r.theta = 1 - 3*G*r.dGamma/qTrial;
+        if (withTangent)
+        {
+            r.thetaBar = 1/(1 + H/(3*G)) - (1 - r.theta);
+        }
+    }
+
+    r.tau = 2*G*r.theta*r.devEps + bulkModulus()*r.volStrain*vector::one;
+
+    return true;
+}
+
+
+void Foam::mechanicalLaws::vonMisesPlastic::commit
+(
+    const tensor& Finv,
+    const materialState& old,
+    const returnMapping& r,
+    materialState& updated
+) const
+{
+    updated.epsilonP = old.epsilonP + r.dGamma;
+
+    if (r.dGamma > 0)
+    {
+        // [S6] corrected be = exp(2 eps), eps = theta dev(eps_trial) + ln Je/3
+        // (same axes), back to the plastic history: Cp^-1 = F^-1 be F^-T
+        const vector eps(r.theta*r.devEps + r.volStrain/3*vector::one);
+        const symmTensor be
+        (
+            r.trial.compose
+            (
+                vector
+                (
+                    Foam::exp(2*eps.x()),
+                    Foam::exp(2*eps.y()),
+                    Foam::exp(2*eps.z())
+                )
+            )
+        );
+        updated.CpInv = symm(Finv & be & Finv.T());
+    }
+    else
+    {
+        updated.CpInv = old.CpInv;
+    }
 }
 
 
@@ -105,7 +234,8 @@ Foam::scalar Foam::mechanicalLaws::vonMisesPlastic::plasticMultiplier
 Foam::mechanicalLaws::vonMisesPlastic::vonMisesPlastic(const dictionary& dict)
 :
     mechanicalLaw(dict),
-    yieldStress_(Function1<scalar>::New("yieldStress", dict))
+    yieldStress_("yieldStress", dict),
+    initialYield_(yieldStress_.value(0))
 {
     checkHardening(dict);
 }
@@ -120,75 +250,43 @@ Foam::tensor Foam::mechanicalLaws::vonMisesPlastic::stress
     materialState& updated
 ) const
 {
-    if (!admissible(F))
+    returnMapping r;
+    if (!returnMap(F, old, r))
     {
         updated = old;
         return rejectedStress();
     }
 
-    // [S6] elastic predictor: trial left Cauchy-Green be = F Cp^-1 F^T
-    const symmTensor beTrial(symm(F & old.CpInv & F.T()));
-    const symmetricEigen eig(beTrial);
-    if (!(cmptMin(eig.values) > 0))
-    {
-        updated = old;
-        return rejectedStress();
-    }
-
-    // Principal logarithmic elastic strains
-    vector eps
-    (
-        0.5*Foam::log(eig.values.x()),
-        0.5*Foam::log(eig.values.y()),
-        0.5*Foam::log(eig.values.z())
-    );
-    const scalar volStrain = eps.x() + eps.y() + eps.z();
-    const vector devEps(eps - volStrain/3*vector::one);
-
-    // [S5] Hencky: Kirchhoff stress in principal axes
-    const scalar G = mu();
-    vector devTau(2*G*devEps);
-    const scalar qTrial = Foam::sqrt(1.5)*mag(devTau);
-
-    updated.epsilonP = old.epsilonP;
-
-    if (qTrial > yieldStress(old.epsilonP))
-    {
-        // [S7] radial return
-        const scalar dg = plasticMultiplier(qTrial, old.epsilonP);
-        const scalar scale = 1 - 3*G*dg/qTrial;
-        devTau *= scale;
-        eps = scale*devEps + volStrain/3*vector::one;
-        updated.epsilonP = old.epsilonP + dg;
-
-        // [S6] back to the plastic history: Cp^-1 = F^-1 be F^-T
-        const symmTensor be
-        (
-            eig.compose
-            (
-                vector
-                (
-                    Foam::exp(2*eps.x()),
-                    Foam::exp(2*eps.y()),
-                    Foam::exp(2*eps.z())
-                )
-            )
-        );
-        const tensor Finv(inv(F));
-        updated.CpInv = symm(Finv & be & Finv.T());
-    }
-    else
-    {
-        updated.CpInv = old.CpInv;
-    }
-
-    const symmTensor tau
-    (
-        eig.compose(devTau + bulkModulus()*volStrain*vector::one)
-    );
+    const tensor Finv(inv(F));
+    commit(Finv, old, r, updated);
 
     // P = tau F^-T   [S2]
-    return tau & inv(F).T();
+    return r.trial.compose(r.tau) & Finv.T();
+}
+
+
+Foam::tensor Foam::mechanicalLaws::vonMisesPlastic::stressAndTangent
+(
+    const tensor& F,
+    const materialState& old,
+    materialState& updated,
+    stressTangent& dPdF
+) const
+{
+    returnMapping r;
+    if (!returnMap(F, old, r, true))
+    {
+        // Not evaluated: the elastic tangent keeps a matrix invertible
+        updated = old;
+        hookeTangent(dPdF);
+        return rejectedStress();
+    }
+
+    const tensor Finv(inv(F));
+    commit(Finv, old, r, updated);
+    const tensor P(r.trial.compose(r.tau) & Finv.T());
+    tangent(F, Finv, old, r, P, dPdF);
+    return P;
 }
 
 
@@ -199,51 +297,29 @@ Foam::tensor Foam::mechanicalLaws::vonMisesPlastic::acousticTensor
     const vector& n
 ) const
 {
-    const tensor elastic(mechanicalLaw::acousticTensor(F, old, n));
+    // A_ik = n_j dP_ij/dF_kl n_l: the force a face takes per displacement
+    // jump across it (elastic mu I + (lambda + mu) n n at F = I)
+    stressTangent dPdF;
+    materialState updated;
+    stressAndTangent(F, old, updated, dPdF);
 
-    if (!admissible(F))
+    tensor A(Zero);
+    for (direction i = 0; i < 3; ++i)
     {
-        return elastic;
+        for (direction k = 0; k < 3; ++k)
+        {
+            scalar s = 0;
+            for (direction j = 0; j < 3; ++j)
+            {
+                for (direction l = 0; l < 3; ++l)
+                {
+                    s += n[j]*dPdF(3*i + j, 3*k + l)*n[l];
+                }
+            }
+            A[3*i + k] = s;
+        }
     }
-
-    const symmTensor beTrial(symm(F & old.CpInv & F.T()));
-    const symmetricEigen eig(beTrial);
-    if (!(cmptMin(eig.values) > 0))
-    {
-        return elastic;
-    }
-    const vector eps
-    (
-        0.5*Foam::log(eig.values.x()),
-        0.5*Foam::log(eig.values.y()),
-        0.5*Foam::log(eig.values.z())
-    );
-    const vector devEps(eps - (eps.x() + eps.y() + eps.z())/3*vector::one);
-    const scalar G = mu();
-    const scalar qTrial = Foam::sqrt(1.5)*2*G*mag(devEps);
-
-    if (qTrial <= yieldStress(old.epsilonP))
-    {
-        return elastic;
-    }
-
-    // [S16] consistent J2 tangent C = K 1x1 + 2 G theta Idev
-    // - 2 G thetaBar N x N, contracted with n on both sides
-    const scalar dg = plasticMultiplier(qTrial, old.epsilonP);
-    const scalar epsP = old.epsilonP + dg;
-    const scalar h = 1e-7*epsP + 1e-10;
-    const scalar H =
-        max((yieldStress(epsP + h) - yieldStress(epsP))/h, scalar(0));
-    const scalar theta = 1 - 3*G*dg/qTrial;
-    const scalar thetaBar = 1/(1 + H/(3*G)) - (1 - theta);
-
-    const symmTensor N(eig.compose(devEps/mag(devEps)));
-    const vector m(N & n);
-
-    const scalar Gt = G*theta;
-    return
-        Gt*tensor::I + (bulkModulus() + Gt/3)*sqr(n)
-      - 2*G*max(thetaBar, scalar(0))*sqr(m);
+    return A;
 }
 
 
