@@ -315,18 +315,25 @@ void Foam::totalLagrangianSolid::updatePreconditioner
             Eigen::VectorXd R;
             residual(x, R);
             const scalar h = 1e-7*max(gMaxNorm(x), typicalDisplacement());
-            if (!fdJacobian_->update(*this, x, R, h))
-            {
-                WarningInFunction
-                    << "Factorisation of the finite-difference Jacobian"
-                    << " failed; using the compact preconditioner" << endl;
-                fdJacobian_.clear();
-            }
-            else
+            if (fdJacobian_->update(*this, x, R, h))
             {
                 preconDeltaT_ = mesh_.time().deltaTValue();
                 return;
             }
+
+            // A far-off iterate can make the Jacobian singular: the compact
+            // operator stands in for this iteration, and the finite-difference
+            // Jacobian is tried again at the next one (a run must not lose it
+            // for good because of one wild trial)
+            WarningInFunction
+                << "Factorisation of the finite-difference Jacobian failed;"
+                << " using the compact preconditioner until it factorises"
+                << " again" << endl;
+            unpack(x, Dwork_.primitiveFieldRef());
+            Dwork_.correctBoundaryConditions();
+            updateGradient();
+            assemblePreconditioner(patchStiffness, law_->plastic());
+            return;
         }
         else
         {
@@ -354,7 +361,7 @@ void Foam::totalLagrangianSolid::precondition
     Eigen::VectorXd& z
 ) const
 {
-    if (fdJacobian_.valid())
+    if (fdJacobian_.valid() && fdJacobian_->valid())
     {
         fdJacobian_->solve(r, z);
     }
