@@ -195,8 +195,20 @@ int main(int argc, char *argv[])
         }
         drv.setTime(0);
         drv.setSpringStretch(drv.last().tT.x()/k);
-        drv.state().contactAge *=
-            1 + d.getOrDefault<scalar>("statePerturbation", 0);
+        // The law's first own state variable (contact age, phi)
+        const scalar eps = d.getOrDefault<scalar>("statePerturbation", 0);
+        for (const frictionStateEntry& e : law->stateLayout().entries())
+        {
+            if
+            (
+                eps != 0 && e.kind == frictionStateEntry::SCALAR
+             && e.slot >= frictionState::firstLawSlot
+            )
+            {
+                drv.state().scalarSlot(e.slot) *= 1 + eps;
+                break;
+            }
+        }
 
         if (lubricated)
         {
@@ -217,8 +229,8 @@ int main(int argc, char *argv[])
         os.precision(12);
         os  << "# frictionLawDriver, law " << lawDict.get<word>("type")
             << ", mode " << mode << ", contactPressure " << p << nl;
-        frictionPointDriver::writeHeader(os);
-        frictionPointDriver::write(os, rows);
+        drv.writeHeader(os);
+        drv.write(os, rows);
     }
     Info<< "Wrote " << rows.size() << " rows to " << output << endl;
 

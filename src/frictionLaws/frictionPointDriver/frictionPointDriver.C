@@ -72,9 +72,7 @@ Foam::frictionPointDriver::sample Foam::frictionPointDriver::step
     row.tN = last_.tN;
     row.tT = last_.tT.x();
     row.mu = last_.tN > 0 ? last_.tT.x()/last_.tN : 0;
-    row.contactAge = state_.contactAge;
-    row.lubricationWeight = state_.lubricationWeight;
-    row.status = state_.status;
+    row.state = state_;
     return row;
 }
 
@@ -177,20 +175,60 @@ void Foam::frictionPointDriver::runSpringSlider
 }
 
 
-void Foam::frictionPointDriver::writeHeader(Ostream& os)
+namespace Foam
 {
-    os  << "# time[s] slip[m] slipRate[m/s] tN[Pa] tT[Pa] mu[-]"
-        << " contactAge lubricationWeight status" << nl;
+    //- The law's own scalar variables shown in ParaView: the table columns
+    //  between mu and the status
+    static DynamicList<const frictionStateEntry*> lawColumns
+    (
+        const frictionStateLayout& layout
+    )
+    {
+        DynamicList<const frictionStateEntry*> cols;
+        for (const frictionStateEntry& e : layout.entries())
+        {
+            if
+            (
+                e.kind == frictionStateEntry::SCALAR && e.show
+             && e.slot >= frictionState::firstLawSlot
+            )
+            {
+                cols.append(&e);
+            }
+        }
+        return cols;
+    }
 }
 
 
-void Foam::frictionPointDriver::write(Ostream& os, const UList<sample>& rows)
+void Foam::frictionPointDriver::writeHeader(Ostream& os) const
 {
+    os  << "# time[s] slip[m] slipRate[m/s] tN[Pa] tT[Pa] mu[-]";
+    for (const frictionStateEntry* e : lawColumns(law_.stateLayout()))
+    {
+        os  << ' ' << frictionStateLayout::column(*e);
+    }
+    os  << " status" << nl;
+}
+
+
+void Foam::frictionPointDriver::write
+(
+    Ostream& os,
+    const UList<sample>& rows
+) const
+{
+    const DynamicList<const frictionStateEntry*> cols =
+        lawColumns(law_.stateLayout());
     for (const sample& r : rows)
     {
         os  << r.time << ' ' << r.slip << ' ' << r.slipRate << ' ' << r.tN
-            << ' ' << r.tT << ' ' << r.mu << ' ' << r.contactAge << ' '
-            << r.lubricationWeight << ' ' << r.status << nl;
+            << ' ' << r.tT << ' ' << r.mu;
+        for (const frictionStateEntry* e : cols)
+        {
+            os  << ' ' << r.state.scalarSlot(e->slot);
+        }
+        os  << ' ' << r.state.status << nl;
     }
 }
 

@@ -12,7 +12,6 @@ Description
 #include "addToRunTimeSelectionTable.H"
 #include "volFields.H"
 #include "OFstream.H"
-#include "frictionStateEntries.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -73,17 +72,22 @@ void Foam::frictionalContactFvPatchVectorField::updateFields() const
             .boundaryFieldRef()[pi];
     };
 
-    using namespace frictionStateEntries;
-    scalarOut("contactAge", dimTime) = member(state_, &frictionState::contactAge);
-    scalarOut("lubricationWeight", dimless) =
-        member(state_, &frictionState::lubricationWeight);
-    scalarOut("slipRate", dimVelocity) =
-        member(state_, &frictionState::slipRate);
-    scalarOut(statusKeyword, dimless) = status(state_);
-    scalarOut("cumulatedSlip", dimLength) =
-        member(state_, &frictionState::cumulatedSlip);
-    vectorOut("plasticSlip", dimLength) =
-        member(state_, &frictionState::plasticSlip);
+    // The law's state variables it marks shown
+    for (const frictionStateEntry& e : layout_.entries())
+    {
+        if (!e.show)
+        {
+            continue;
+        }
+        if (e.kind == frictionStateEntry::VECTOR)
+        {
+            vectorOut(e.name, dimensionSet(e.dimensions)) = layout_.vectorValues(state_, e);
+        }
+        else
+        {
+            scalarOut(e.name, dimensionSet(e.dimensions)) = layout_.scalarValues(state_, e);
+        }
+    }
     scalarOut("contactPressure", dimPressure) = contactPressure_;
     scalarOut("nominalContactPressure", dimPressure) =
         nominalContactPressure_;
@@ -335,17 +339,8 @@ void Foam::frictionalContactFvPatchVectorField::write(Ostream& os) const
     os.writeEntry("contactSmoothing", contactSmoothing_);
     os.writeEntry("searchRefreshFraction", searchRefreshFraction_);
 
-    // Face state for restart
-    using namespace frictionStateEntries;
-    for (const auto& e : vectors)
-    {
-        member(state_, e.second)().writeEntry(e.first, os);
-    }
-    for (const auto& e : scalars)
-    {
-        member(state_, e.second)().writeEntry(e.first, os);
-    }
-    status(state_)().writeEntry(statusKeyword, os);
+    // Face state for restart, as the law declares it
+    layout_.write(os, state_);
     dissipation_.writeEntry("dissipatedEnergy", os);
     writeEntry("value", os);
 }

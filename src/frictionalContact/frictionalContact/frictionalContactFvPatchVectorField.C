@@ -8,7 +8,6 @@ License
 #include "wallFvPatch.H"
 #include "volFields.H"
 #include "IOdictionary.H"
-#include "frictionStateEntries.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -57,6 +56,7 @@ void Foam::frictionalContactFvPatchVectorField::createLaw() const
     }
     law_ = frictionLaw::New(dict);
     effectiveLawDict_ = dict;
+    layout_ = law_->stateLayout();
 
     Info<< "frictionalContact on patch " << patch().name() << ": law "
         << lawDict_.get<word>("type") << ", obstacle "
@@ -85,6 +85,7 @@ void Foam::frictionalContactFvPatchVectorField::copyFrom
     searchDistance_ = ptf.searchDistance_;
     contactSmoothing_ = ptf.contactSmoothing_;
     searchRefreshFraction_ = ptf.searchRefreshFraction_;
+    layout_ = ptf.layout_;
     state_ = ptf.state_;
     search_ = ptf.search_;
     contactPressure_ = ptf.contactPressure_;
@@ -136,13 +137,12 @@ void Foam::frictionalContactFvPatchVectorField::copyFace
 
 void Foam::frictionalContactFvPatchVectorField::readState
 (
-    const dictionary& dict
+    const dictionary& dict,
+    const frictionLaw& l
 )
 {
     const label n = patch().size();
-    const frictionState fresh =
-        law_.valid() ? law_->initialState() : frictionState();
-    state_.setSize(n, fresh);
+    state_.setSize(n, l.initialState());
     search_.setSize(n, obstacleSearch());
     contactPressure_.setSize(n, 0);
     nominalContactPressure_.setSize(n, 0);
@@ -150,22 +150,17 @@ void Foam::frictionalContactFvPatchVectorField::readState
     penetration_.setSize(n, 0);
     dissipation_.setSize(n, 0);
 
-    // Restart: the state written by write()
-    using namespace frictionStateEntries;
-    if (dict.found(vectors[0].first))
+    // Restart: the state written by write(), as the law declares it
+    if (layout_.foundIn(dict))
     {
-        for (const auto& e : vectors)
+        const wordList missing = layout_.read(dict, state_);
+        if (missing.size())
         {
-            setMember(state_, e.second, vectorField(e.first, dict, n));
-        }
-        for (const auto& e : scalars)
-        {
-            setMember(state_, e.second, scalarField(e.first, dict, n));
-        }
-        const scalarField status(statusKeyword, dict, n);
-        forAll(state_, i)
-        {
-            state_[i].status = label(status[i] + 0.5);
+            WarningInFunction
+                << "patch " << patch().name() << ": the restart state in "
+                << dict.name() << " has no " << missing << " (written by"
+                << " another law?); law " << lawDict_.get<word>("type")
+                << " starts those as in a fresh contact" << endl;
         }
     }
     if (dict.found("dissipatedEnergy"))
@@ -368,13 +363,23 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     obstacle_ = rigidObstacle::New(obstacleDict_, db().time().globalPath());
 
     // The law needs the solid's moduli for automatic penalties; utilities
-    // such as decomposePar read D without them and only copy the entries
+    // such as decomposePar read D without them and only copy the entries,
+    // for which the law's state layout is enough (penalties do not change
+    // it)
     if (db().foundObject<IOdictionary>("mechanicalProperties"))
     {
         createLaw();
+        readState(dict, law_());
     }
-
-    readState(dict);
+    else
+    {
+        dictionary d(lawDict_);
+        d.set("KN", 1.0);
+        d.set("KT", 1.0);
+        const autoPtr<frictionLaw> layoutLaw(frictionLaw::New(d));
+        layout_ = layoutLaw->stateLayout();
+        readState(dict, layoutLaw());
+    }
 
     if (dict.found("value"))
     {
@@ -414,6 +419,7 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     obstacleDict_ = ptf.obstacleDict_;
     lawDict_ = ptf.lawDict_;
     effectiveLawDict_ = ptf.effectiveLawDict_;
+    layout_ = ptf.layout_;
     obstacle_ = rigidObstacle::New
     (
         obstacleDict_, p.boundaryMesh().mesh().time().globalPath()

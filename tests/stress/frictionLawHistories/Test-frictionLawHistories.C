@@ -125,8 +125,15 @@ bool finite(const frictionResult& r)
     {
         ok = ok && std::isfinite(r.dtTdgT[i]);
     }
-    return ok && std::isfinite(r.state.contactAge)
-        && std::isfinite(r.state.lubricationWeight)
+    for (label i = 0; i < frictionState::nScalars; ++i)
+    {
+        ok = ok && std::isfinite(r.state.scalars[i]);
+    }
+    for (label i = 0; i < frictionState::nVectors; ++i)
+    {
+        ok = ok && std::isfinite(mag(r.state.vectors[i]));
+    }
+    return ok
         && std::isfinite(r.state.slipRate)
         && std::isfinite(r.state.cumulatedSlip);
 }
@@ -155,6 +162,7 @@ bool drive
     }
 
     const long hits0 = frictionLaw::nIterationLimitHits();
+    const frictionStateLayout& layout = law->stateLayout();
     frictionPointDriver drv(*law, p);
     std::vector<std::vector<row>> rows(history.size());
     for (size_t si = 0; si < history.size(); ++si)
@@ -233,9 +241,10 @@ bool drive
                 if (c.lubricatedLaw)
                 {
                     const row& last = rows[si - 1].back();
-                    const scalar alpha = last.r.state.lubricationWeight;
+                    const scalar alpha =
+                        layout.value(last.r.state, "lubricationWeight");
                     const scalar alphaHold =
-                        rs.back().r.state.lubricationWeight;
+                        layout.value(rs.back().r.state, "lubricationWeight");
                     const scalar FT =
                         alpha < 1
                       ? (before - alpha*c.lub.etaB*last.s.slipRate)
@@ -270,7 +279,8 @@ bool drive
         if (c.lubricatedLaw && (si == JUMP || si == RESTART || si == HOLD))
         {
             const lubricated& L = c.lub;
-            scalar thetaPrev = rows[si - 1].back().r.state.contactAge;
+            scalar thetaPrev =
+                layout.value(rows[si - 1].back().r.state, "contactAge");
             auto lawPtr =
                 dynamic_cast<const frictionLaws::lubricatedRateState*>
                 (law.get());
@@ -284,8 +294,8 @@ bool drive
                     vp > 0
                   ? thetaPrev*std::exp(-x) - L.D0/vp*std::expm1(-x)
                   : thetaPrev + g.dt;
-                thetaPrev = rs[i].r.state.contactAge;
-                scalar err = mag(rs[i].r.state.contactAge - theta)/theta;
+                thetaPrev = layout.value(rs[i].r.state, "contactAge");
+                scalar err = mag(thetaPrev - theta)/theta;
                 if (rs[i].r.state.status == frictionState::SLIP)
                 {
                     ++nSlide;
@@ -500,7 +510,11 @@ int main()
             for (label i = 0; i < 5; ++i)
             {
                 drv.step(drv.slip() + v*1e-3, 1e-3);
-                alphaMax = max(alphaMax, drv.state().lubricationWeight);
+                alphaMax = max
+                (
+                    alphaMax,
+                    law->stateLayout().value(drv.state(), "lubricationWeight")
+                );
             }
         }
         unitTest::checkAbs

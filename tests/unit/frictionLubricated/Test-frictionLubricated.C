@@ -54,8 +54,9 @@ int main()
         // and sliding at a prescribed rate does not settle (ill-posed, [F21])
         const scalar v = 1e-4, dt = 0.05*D0/v;
         for (label i = 0; i < 2000; ++i) drv.step(drv.slip() + v*dt, dt);
-        const scalar theta = drv.state().contactAge;
-        unitTest::checkAbs("f = 1", lub.f(v, theta), 1, 1e-9);
+        const scalar theta =
+            law->stateLayout().value(drv.state(), "contactAge");
+        unitTest::checkRel("theta = D0/v (f = 1)", theta, D0/v, 1e-9);
         scalar m0, dm0, alpha, da;
         lub.mu0(v, m0, dm0);
         lub.lubrication().alpha(v, alpha, da);
@@ -81,25 +82,28 @@ int main()
         for (label i = 0; i < 1000; ++i) drv.step(drv.slip() + v1*dt, dt);
         const scalar s0 = drv.slip();
         dt = 0.02*D0/v2;
-        scalar errF = 0, errT = 0;
+        scalar m0, dm0;
+        lub.mu0(v2, m0, dm0);
+        scalar errTheta = 0, errT = 0;
         for (label i = 0; i < 500; ++i)
         {
             drv.step(drv.slip() + v2*dt, dt);
             const scalar d = drv.slip() - s0;
-            const scalar fEx = 1 + M*std::log(1 + (v2/v1 - 1)*std::exp(-d/D0));
-            const scalar vp = drv.state().slipRate;
-            errF = max(errF, mag(lub.f(v2, drv.state().contactAge) - fEx));
-            const scalar fNum = lub.f(vp, drv.state().contactAge);
-            scalar m0, dm0;
-            lub.mu0(vp, m0, dm0);
-            errT = max(errT, mag(drv.last().tT.x() - fNum*m0*p)/(m0*p));
+            const scalar e = std::exp(-d/D0);
+            const scalar thetaEx = D0/v2 + (D0/v1 - D0/v2)*e;
+            const scalar fEx = 1 + M*std::log(1 + (v2/v1 - 1)*e);
+            const scalar theta =
+                law->stateLayout().value(drv.state(), "contactAge");
+            errTheta = max(errTheta, mag(theta - thetaEx)/thetaEx);
+            errT = max(errT, mag(drv.last().tT.x() - fEx*m0*p)/(m0*p));
         }
         // The sliding rate follows the prescribed step within the elastic
-        // slip mu tN/KT = 1e-3 D0: f within 1e-4 of the rigid-contact formula
-        unitTest::checkBelow("max |f - exact|", errF, 1e-4);
+        // slip mu tN/KT = 1e-3 D0 (KT = 1e16): the rigid-contact solution
+        // to within that (measured 1.3e-4 in theta, 1.7e-5 in tT)
+        unitTest::checkBelow("max |theta - exact|/theta", errTheta, 1e-3);
         unitTest::checkBelow
         (
-            "alpha = 0: tT = f mu0 tN exactly while sliding (rel)", errT, 1e-12
+            "alpha = 0: max |tT - f mu0 tN|/(mu0 tN), f exact", errT, 1e-4
         );
     }
 
@@ -120,7 +124,7 @@ int main()
         {
             frictionPointDriver drv(*law, p);
             for (label i = 0; i < 10; ++i) drv.step(0, holds[h]/10);
-            theta[h] = drv.state().contactAge;
+            theta[h] = law->stateLayout().value(drv.state(), "contactAge");
             const scalar dt = 0.002*D0/v;
             peak[h] = 0;
             for (label i = 0; i < 2000; ++i)
@@ -170,7 +174,7 @@ int main()
         vector t1(0.8, -0.6, 0); t1 -= (t1 & n)*n; t1 /= mag(t1);
         const vector t2 = n ^ t1;
         frictionState old = law->initialState();
-        old.contactAge = 2e-3;
+        law->stateLayout().setValue(old, "contactAge", 2e-3);
         old.totalSlip = 1e-6*t1;
         old.plasticSlip = 0.2e-6*t1;
         frictionInput in;

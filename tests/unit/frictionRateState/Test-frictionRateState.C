@@ -114,7 +114,8 @@ int main()
             unitTest::checkRel
             (
                 "[F28] theta_ss = L/v, " + sl,
-                drv.state().contactAge, 1e-5/v, 1e-6
+                law->stateLayout().value(drv.state(), "contactAge"), 1e-5/v,
+                1e-6
             );
         }
 
@@ -184,7 +185,8 @@ int main()
             const vector n(0.36, 0.48, 0.8);
             vector t1(0.8, -0.6, 0); t1 -= (t1 & n)*n; t1 /= mag(t1);
             frictionState old = law->initialState();
-            old.contactAge = 2.0;         // near steady state at 5e-6 m/s
+            // near steady state at 5e-6 m/s
+            law->stateLayout().setValue(old, "contactAge", 2.0);
             old.plasticSlip = 1e-6*t1;
             frictionInput in;
             in.n = n;
@@ -209,10 +211,15 @@ int main()
             "type rateState; stateLaw ageing; " + base
         );
         frictionPointDriver drv(*law, 1e6);
-        const scalar theta0 = drv.state().contactAge;
+        const frictionStateLayout& layout = law->stateLayout();
+        const scalar theta0 = layout.value(drv.state(), "contactAge");
         for (label i = 0; i < 10; ++i) drv.step(0, 10.0);
         unitTest::checkTrue("hold at zero load: stick", drv.state().status == 1);
-        unitTest::checkRel("theta = theta0 + t", drv.state().contactAge, theta0 + 100, 1e-12);
+        unitTest::checkRel
+        (
+            "theta = theta0 + t", layout.value(drv.state(), "contactAge"),
+            theta0 + 100, 1e-12
+        );
     }
 
     unitTest::checkTrue

@@ -50,7 +50,11 @@ static scalar amplitudeRatio
 
     const scalar k = 1/(1/kTarget - 1/law.KT());
     drv.setSpringStretch(drv.last().tT.x()/k);
-    drv.state().contactAge *= 1.05;
+    const word phi(law.stateLayout().entries().last().name);
+    law.stateLayout().setValue
+    (
+        drv.state(), phi, 1.05*law.stateLayout().value(drv.state(), phi)
+    );
 
     scalar early = 0, late = 0;
     const label n = nPeriods*stepsPerPeriod;

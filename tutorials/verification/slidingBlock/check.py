@@ -41,7 +41,8 @@ p = patch("3", "contactPressure")
 tT = patch("3", "frictionTraction")
 status = patch("3", "contactStatus")
 rate = patch("3", "slipRate")
-alpha = patch("3", "lubricationWeight")
+# Coulomb's law has no lubrication weight (it writes only what it declares)
+alpha = patch("3", "lubricationWeight") if law != "coulomb" else [0.0]*nFaces
 err = 0.0
 nSlip = 0
 for pi, ti, si, vi, ai in zip(p, tT, status, rate, alpha):

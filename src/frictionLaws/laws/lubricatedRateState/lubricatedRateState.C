@@ -14,6 +14,7 @@ License
 #include "relaxationStep.H"
 #include "frictionParameters.H"
 #include "addToRunTimeSelectionTable.H"
+#include "dimensionSets.H"
 
 namespace Foam
 {
@@ -75,6 +76,9 @@ Foam::frictionLaws::lubricatedRateState::lubricatedRateState
             << " 0 < vMin < vMax, got " << range << exit(FatalIOError);
     }
     checkRateSensitivity(range[0], range[1]);
+
+    layout_.addScalar("contactAge", thetaSlot, dimTime, true, true);
+    layout_.addScalar("lubricationWeight", alphaSlot, dimless, false, true);
 }
 
 
@@ -100,14 +104,32 @@ void Foam::frictionLaws::lubricatedRateState::mu0
 }
 
 
-Foam::scalar Foam::frictionLaws::lubricatedRateState::f
+void Foam::frictionLaws::lubricatedRateState::slidingThreshold
 (
-    const scalar v,
-    const scalar theta
+    const scalar vp,
+    const scalar theta,
+    const scalar tN,
+    scalar& Y,
+    scalar& dYdvp,
+    scalar& dYdtheta
 ) const
 {
-    // [F17]
-    return max(1 + 0.5*M_*std::log(theta*theta*(v*v + Vs_*Vs_)/(D0_*D0_)), 0);
+    // Y = f mu0 tN with f = 1 + M ln(theta v_eff/D0) cut at zero [F17],
+    // v_eff = sqrt(v_p^2 + V_s^2), mu0(v_p) [F18]
+    const scalar veff2 = vp*vp + Vs_*Vs_;
+    const scalar f = 1 + 0.5*M_*std::log(theta*theta*veff2/(D0_*D0_));
+    if (f <= 0)
+    {
+        Y = 0;
+        dYdvp = 0;
+        dYdtheta = 0;
+        return;
+    }
+    scalar m0, dm0dvp;
+    mu0(vp, m0, dm0dvp);
+    Y = f*m0*tN;
+    dYdvp = (M_*vp/veff2*m0 + f*dm0dvp)*tN;
+    dYdtheta = M_/theta*m0*tN;
 }
 
 
@@ -165,7 +187,7 @@ Foam::frictionState
 Foam::frictionLaws::lubricatedRateState::initialState() const
 {
     frictionState s;
-    s.contactAge = D0_/Vs_;
+    s.scalars[thetaSlot] = D0_/Vs_;
     return s;
 }
 
@@ -181,7 +203,7 @@ void Foam::frictionLaws::lubricatedRateState::contactAge
 {
     // Age at the start of the step: a face closing now starts in steady
     // sliding at its first slip rate with steadySliding [F17b]
-    scalar theta0 = old.contactAge;
+    scalar theta0 = old.scalars[thetaSlot];
     scalar dtheta0dvp = 0;
     if (steadyFreshContact_ && old.status == frictionState::OPEN)
     {
@@ -223,26 +245,11 @@ void Foam::frictionLaws::lubricatedRateState::update
     auto threshold = [&](scalar dg, slipThreshold& thr)
     {
         const scalar vp = dg/dt;
-        scalar theta1, dtheta1dvp;
+        scalar theta1, dtheta1dvp, dYdvp, dYdtheta;
         contactAge(old, vp, dt, theta1, dtheta1dvp);
-        const scalar veff2 = vp*vp + Vs_*Vs_;
-        const scalar fRaw =
-            1 + 0.5*M_*std::log(theta1*theta1*veff2/(D0_*D0_));
-        scalar m0, dm0dvp;
-        mu0(vp, m0, dm0dvp);
-        if (fRaw > 0)
-        {
-            const scalar dfdvp = M_*(dtheta1dvp/theta1 + vp/veff2);
-            thr.Y = fRaw*m0*tN;
-            thr.dYdDg = tN*(dfdvp*m0 + fRaw*dm0dvp)/dt;
-            thr.dYdgN = fRaw*m0*KN;
-        }
-        else
-        {
-            thr.Y = 0;
-            thr.dYdDg = 0;
-            thr.dYdgN = 0;
-        }
+        slidingThreshold(vp, theta1, tN, thr.Y, dYdvp, dYdtheta);
+        thr.dYdDg = (dYdvp + dYdtheta*dtheta1dvp)/dt;
+        thr.dYdgN = thr.Y/tN*KN;
         thr.dYdgT = Zero;
     };
 
@@ -275,8 +282,8 @@ void Foam::frictionLaws::lubricatedRateState::update
       + (alpha*etaB_/dt)*P;
     out.dtTdgN = (1 - alpha)*rr.dFdgN;
 
-    out.state.contactAge = theta1;
-    out.state.lubricationWeight = alpha;
+    out.state.scalars[thetaSlot] = theta1;
+    out.state.scalars[alphaSlot] = alpha;
     out.state.slipRate = vp;
 }
 

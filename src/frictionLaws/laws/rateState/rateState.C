@@ -53,6 +53,12 @@ Foam::frictionLaws::rateState::rateState(const dictionary& dict)
     const scalar v0 =
         frictionParameters::positive(dict, "initialSlipRate", VStar_);
     phiInit_ = stateLaw_->steadyState(v0);
+
+    layout_.addScalar
+    (
+        stateLaw_->stateName(), phiSlot, stateLaw_->stateDimensions(), true,
+        true, stateLaw_->oldStateName()
+    );
 }
 
 
@@ -109,7 +115,7 @@ Foam::scalar Foam::frictionLaws::rateState::muSteady(const scalar v) const
 Foam::frictionState Foam::frictionLaws::rateState::initialState() const
 {
     frictionState s;
-    s.contactAge = phiInit_;
+    s.scalars[phiSlot] = phiInit_;
     return s;
 }
 
@@ -134,7 +140,7 @@ void Foam::frictionLaws::rateState::update
     const scalar KN = KN_;
     const tensor P = projector(in.n);
     const vector xiTrial = KT_*(P & (in.gT - old.plasticSlip));      // [F3]
-    const scalar phi0 = old.contactAge;
+    const scalar phi0 = old.scalars[phiSlot];
     const frictionStateLaw& sl = *stateLaw_;
 
     // Threshold at slip increment dg: v = dg/dt, phi_{n+1}(v), mu(v, phi)
@@ -172,9 +178,8 @@ void Foam::frictionLaws::rateState::update
     const scalar v = rr.dg/dt;
     scalar phi1, dphi1dv;
     sl.evolve(phi0, v, dt, phi1, dphi1dv);
-    out.state.contactAge = phi1;
+    out.state.scalars[phiSlot] = phi1;
     out.state.slipRate = v;
-    out.state.lubricationWeight = 0;
 }
 
 // ************************************************************************* //

@@ -14,6 +14,7 @@ License
 #include "relaxationStep.H"
 #include "frictionParameters.H"
 #include "addToRunTimeSelectionTable.H"
+#include "dimensionSets.H"
 
 namespace Foam
 {
@@ -97,6 +98,12 @@ Foam::scalar Foam::frictionStateLaws::relaxation::Gphi(const scalar v) const
 {
     // [F22b] for the relaxation law: G_phi = 1/(t** phi_ss)
     return 1/(tRelax_*steadyState(v));
+}
+
+
+Foam::dimensionSet Foam::frictionStateLaws::relaxation::stateDimensions() const
+{
+    return dimless;
 }
 
 // ************************************************************************* //
