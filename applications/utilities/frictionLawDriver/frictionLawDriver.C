@@ -40,7 +40,6 @@ Usage
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "frictionPointDriver.H"
-#include "lubricatedRateState.H"
 
 using namespace Foam;
 
@@ -136,9 +135,6 @@ int main(int argc, char *argv[])
     frictionPointDriver drv(*law, p);
     DynamicList<frictionPointDriver::sample> rows;
 
-    const auto* lubricated =
-        dynamic_cast<const frictionLaws::lubricatedRateState*>(law.get());
-
     if (mode == "prescribed")
     {
         const dictionary& d = dict.subDict("prescribed");
@@ -157,7 +153,7 @@ int main(int argc, char *argv[])
             drv.setTime(0);
         }
 
-        if (lubricated)
+        if (law->nRateStates() >= 0)
         {
             scalar vMin = GREAT, vMax = 0;
             for (label i = 0; i <= 1000; ++i)
@@ -167,7 +163,7 @@ int main(int argc, char *argv[])
             }
             if (vMax > 0)
             {
-                lubricated->checkRateSensitivity(vMin, max(vMax, 1.001*vMin));
+                law->checkWellPosedness(vMin, max(vMax, 1.001*vMin), p, p);
             }
         }
 
@@ -210,10 +206,7 @@ int main(int argc, char *argv[])
             }
         }
 
-        if (lubricated)
-        {
-            lubricated->checkRateSensitivity(1e-2*mag(V), 1e2*mag(V));
-        }
+        law->checkWellPosedness(1e-2*mag(V), 1e2*mag(V), p, p);
 
         drv.runSpringSlider(M, k, V, endTime, dt, rows, every);
     }

@@ -96,6 +96,26 @@ void Foam::frictionalContactFvPatchVectorField::updateFields() const
 }
 
 
+void Foam::frictionalContactFvPatchVectorField::sampleSensitivity
+(
+    const frictionResult& res
+)
+{
+    // [F21] at the face's own pressure, sliding rate and state
+    const frictionLaw& l = law();
+    if (l.nRateStates() >= 0 && res.state.status == frictionState::SLIP)
+    {
+        frictionLaw::rateStates x(scalar(0));
+        l.rateStatesOf(res.state, x);
+        sensitivity_.add
+        (
+            l.rateSensitivity(res.state.slipRate, x, res.tN),
+            res.state.slipRate, res.tN
+        );
+    }
+}
+
+
 void Foam::frictionalContactFvPatchVectorField::writeIntegrals() const
 {
     if (!Pstream::master())
@@ -226,6 +246,7 @@ void Foam::frictionalContactFvPatchVectorField::commit
     maxPenetrationAt_ = Zero;
     nContact_ = 0;
     nSlip_ = 0;
+    sensitivity_ = frictionLaw::sensitivitySummary();
 
     frictionResult res;
     vector n;
@@ -253,6 +274,7 @@ void Foam::frictionalContactFvPatchVectorField::commit
                 if (res.state.status == 2)
                 {
                     ++nSlip_;
+                    sampleSensitivity(res);
                 }
                 const scalar pen = max(-gap, scalar(0));
                 if (pen > maxPenetration_)
@@ -280,6 +302,24 @@ void Foam::frictionalContactFvPatchVectorField::commit
     reduce(frictionForce_, sumOp<vector>());
     reduce(nContact_, sumOp<label>());
     reduce(nSlip_, sumOp<label>());
+    {
+        frictionLaw::sensitivitySummary& s = sensitivity_;
+        const scalar localMin = s.minimum;
+        reduce(s.minimum, minOp<scalar>());
+        if (localMin != s.minimum)
+        {
+            s.vAtMin = -GREAT;
+            s.pAtMin = -GREAT;
+        }
+        reduce(s.vAtMin, maxOp<scalar>());
+        reduce(s.pAtMin, maxOp<scalar>());
+        reduce(s.nSampled, sumOp<label>());
+        reduce(s.nNegative, sumOp<label>());
+        reduce(s.vNegMin, minOp<scalar>());
+        reduce(s.vNegMax, maxOp<scalar>());
+        reduce(s.pNegMin, minOp<scalar>());
+        reduce(s.pNegMax, maxOp<scalar>());
+    }
     {
         // location of the largest penetration over all processors
         scalarList pens(Pstream::nProcs(), scalar(0));
@@ -311,6 +351,27 @@ void Foam::frictionalContactFvPatchVectorField::report
         << " N, dissipated " << totalDissipation_ << " J, largest"
         << " penetration " << maxPenetration_ << " m at "
         << maxPenetrationAt_ << endl;
+
+    // [F21] sliding faces with a negative instantaneous rate sensitivity
+    const frictionLaw::sensitivitySummary& s = sensitivity_;
+    if (s.nNegative)
+    {
+        if (!illPosedWarned_)
+        {
+            law().warnIllPosed
+            (
+                s,
+                "sliding faces of patch " + patch().name() + " at t = "
+              + name(k.time)
+            );
+            illPosedWarned_ = true;
+        }
+        Info<< "    contact " << patch().name() << ": ill-posed sliding on "
+            << s.nNegative << " of " << s.nSampled << " sliding faces"
+            << " (d tT/d ln v < 0 at tN " << s.pNegMin << " to "
+            << s.pNegMax << " Pa, v " << s.vNegMin << " to " << s.vNegMax
+            << " m/s; min " << s.minimum << " Pa)" << endl;
+    }
 
     // [C2c] obstacle searches since the last report (this step and any
     // cut-back attempts before it)

@@ -100,6 +100,8 @@ void Foam::frictionalContactFvPatchVectorField::copyFrom
     maxPenetrationAt_ = ptf.maxPenetrationAt_;
     nContact_ = ptf.nContact_;
     nSlip_ = ptf.nSlip_;
+    sensitivity_ = ptf.sensitivity_;
+    illPosedWarned_ = ptf.illPosedWarned_;
     linearised_ = false;
 }
 
@@ -273,6 +275,7 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     maxPenetrationAt_(Zero),
     nContact_(0),
     nSlip_(0),
+    illPosedWarned_(false),
     linearised_(false)
 {}
 
@@ -305,6 +308,7 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     maxPenetrationAt_(Zero),
     nContact_(0),
     nSlip_(0),
+    illPosedWarned_(false),
     linearised_(false)
 {
     if (!isA<wallFvPatch>(p))
@@ -413,6 +417,7 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     maxPenetrationAt_(Zero),
     nContact_(0),
     nSlip_(0),
+    illPosedWarned_(false),
     linearised_(false)
 {
     // iF may be a null field (reconstructPar): the time comes from the mesh

@@ -41,8 +41,8 @@ Description
     every rate), alpha exactly 0 and 1 (alpha = 1: tT = eta_b v at every
     step, the hold included), mu = 0 (coulomb and mu0 = 0: tT = 0, resp.
     alpha eta_b v). Rate sensitivity [F21]: the pear-tube set must be
-    flagged (a_eff < 0, minimum M mu_d - (mu_s - mu_d) e^-(1+M)), M = 0.5
-    must not.
+    flagged (d tT/d ln v < 0; without film its minimum is
+    tN (M mu_d - (mu_s - mu_d) e^-(1+M))), M = 0.5 without film must not.
 
     Prints the law x history matrix (ok, FAIL, or the fatal message if a law
     refused its input).
@@ -542,7 +542,7 @@ int main()
         );
     }
 
-    Info<< nl << "Negative rate sensitivity a_eff [F21]" << endl;
+    Info<< nl << "Negative rate sensitivity [F21]" << endl;
     {
         // pear-tube set: mu_s 0.15, mu_d 0.1, M 0.1; the warning is printed
         // by the constructor (slipRateRange up to 1 m/s)
@@ -553,18 +553,23 @@ int main()
             " criticalVelocity 1e-3; filmViscosity 3e9;"
             " lubrication { " + stribeck + " }"
         );
-        const auto& lubLaw =
-            dynamic_cast<const frictionLaws::lubricatedRateState&>(*law);
         unitTest::checkTrue
         (
-            "pear set: warning issued (a_eff < 0)",
-            lubLaw.checkRateSensitivity(1e-9, 1)
+            "pear set: warning issued (d tT/d ln v < 0)",
+            law->checkWellPosedness(1e-9, 1, 1e6, 1e9)
         );
-        scalar vAt;
+        autoPtr<frictionLaw> dry = frictionTest::law
+        (
+            "type lubricatedRateState; " + pen + "M 0.1; D0 1e-6;"
+            " creepVelocity 1e-9; muStatic 0.15; muDynamic 0.1;"
+            " criticalVelocity 1e-3; filmViscosity 3e9;"
+            " lubrication { type constant; alpha 0; }"
+        );
         unitTest::checkRel
         (
-            "pear set: min a_eff = M mu_d - (mu_s - mu_d) e^-(1+M)",
-            lubLaw.minRateSensitivity(1e-9, 1, vAt),
+            "pear set, alpha = 0: min d tT/d ln v / tN"
+            " = M mu_d - (mu_s - mu_d) e^-(1+M)",
+            dry->steadySensitivity(1e-9, 1, p, p).minimum/p,
             0.1*0.1 - 0.05*std::exp(-1.1), 1e-3
         );
         // the ill-posed law still runs the whole history
@@ -585,13 +590,13 @@ int main()
             "type lubricatedRateState; " + pen + "M 0.5; D0 1e-6;"
             " creepVelocity 1e-9; muStatic 0.15; muDynamic 0.1;"
             " criticalVelocity 1e-3; filmViscosity 3e9;"
-            " lubrication { " + stribeck + " }"
+            " lubrication { type constant; alpha 0; }"
         );
         unitTest::checkTrue
         (
-            "M = 0.5: no warning (a_eff > 0 on 1e-9 to 1 m/s)",
-            !dynamic_cast<const frictionLaws::lubricatedRateState&>(*stable)
-                .checkRateSensitivity(1e-9, 1)
+            "M = 0.5, alpha = 0: no warning (d tT/d ln v > 0 on 1e-9 to"
+            " 1 m/s, 1 MPa to 1 GPa)",
+            !stable->checkWellPosedness(1e-9, 1, 1e6, 1e9)
         );
     }
 

@@ -104,11 +104,49 @@ void Foam::frictionLaws::rateState::mu
 }
 
 
-Foam::scalar Foam::frictionLaws::rateState::muSteady(const scalar v) const
+void Foam::frictionLaws::rateState::steadyRateStates
+(
+    const scalar v,
+    const scalar,
+    rateStates& x
+) const
 {
-    scalar m, d1, d2;
-    mu(v, stateLaw_->steadyState(v), m, d1, d2);
-    return m;
+    x[0] = stateLaw_->steadyState(v);
+}
+
+
+Foam::scalar Foam::frictionLaws::rateState::slidingTraction
+(
+    const scalar v,
+    const rateStates& x,
+    const scalar tN
+) const
+{
+    scalar m, dmdv, dmdlnphi;
+    mu(v, x[0], m, dmdv, dmdlnphi);
+    return max(m, scalar(0))*tN;
+}
+
+
+void Foam::frictionLaws::rateState::stateRates
+(
+    const scalar v,
+    const rateStates& x,
+    const scalar,
+    rateStates& xdot
+) const
+{
+    xdot[0] = stateLaw_->rate(x[0], v);
+}
+
+
+void Foam::frictionLaws::rateState::rateStatesOf
+(
+    const frictionState& s,
+    rateStates& x
+) const
+{
+    x[0] = s.scalars[phiSlot];
 }
 
 

@@ -94,10 +94,14 @@ Foam::scalar Foam::frictionStateLaws::relaxation::steadyState
 }
 
 
-Foam::scalar Foam::frictionStateLaws::relaxation::Gphi(const scalar v) const
+Foam::scalar Foam::frictionStateLaws::relaxation::rate
+(
+    const scalar phi,
+    const scalar v
+) const
 {
-    // [F22b] for the relaxation law: G_phi = 1/(t** phi_ss)
-    return 1/(tRelax_*steadyState(v));
+    // [F27]: -(phi - phi_ss)/(t** phi_ss)
+    return (1 - phi/steadyState(v))/tRelax_;
 }
 
 
