@@ -72,6 +72,7 @@ Foam::frictionPointDriver::sample Foam::frictionPointDriver::step
     row.tN = last_.tN;
     row.tT = last_.tT.x();
     row.mu = last_.tN > 0 ? last_.tT.x()/last_.tN : 0;
+    row.loadPoint = loadPoint_;
     row.state = state_;
     return row;
 }
@@ -108,7 +109,21 @@ Foam::frictionPointDriver::springSliderStep
     const scalar dt
 )
 {
-    const scalar xL = loadPoint_ + V*dt;
+    return springSliderMove(M, k, V*dt, dt);
+}
+
+
+Foam::frictionPointDriver::sample
+Foam::frictionPointDriver::springSliderMove
+(
+    const scalar M,
+    const scalar k,
+    const scalar dxL,
+    const scalar dt
+)
+{
+    const scalar V = dxL/dt;
+    const scalar xL = loadPoint_ + dxL;
     const scalar x0 = slip_;
     const scalar v0 = velocity_;
     const scalar mdt2 = M/(dt*dt);
@@ -156,7 +171,7 @@ void Foam::frictionPointDriver::runSpringSlider
 (
     const scalar M,
     const scalar k,
-    const scalar V,
+    const Function1<scalar>& V,
     const scalar endTime,
     const scalar dt,
     DynamicList<sample>& out,
@@ -166,7 +181,10 @@ void Foam::frictionPointDriver::runSpringSlider
     label i = 0;
     while (time_ < endTime - 1e-9*dt)
     {
-        const sample row = springSliderStep(M, k, V, min(dt, endTime - time_));
+        // load point moved exactly by the integral of V over the step
+        const scalar h = min(dt, endTime - time_);
+        const sample row =
+            springSliderMove(M, k, V.integrate(time_, time_ + h), h);
         if (++i % every == 0 || time_ >= endTime - 1e-9*dt)
         {
             out.append(row);
@@ -201,21 +219,26 @@ namespace Foam
 }
 
 
-void Foam::frictionPointDriver::writeHeader(Ostream& os) const
+void Foam::frictionPointDriver::writeHeader
+(
+    Ostream& os,
+    const bool loadPoint
+) const
 {
     os  << "# time[s] slip[m] slipRate[m/s] tN[Pa] tT[Pa] mu[-]";
     for (const frictionStateEntry* e : lawColumns(law_.stateLayout()))
     {
         os  << ' ' << frictionStateLayout::column(*e);
     }
-    os  << " status" << nl;
+    os  << " status" << (loadPoint ? " loadPoint[m]" : "") << nl;
 }
 
 
 void Foam::frictionPointDriver::write
 (
     Ostream& os,
-    const UList<sample>& rows
+    const UList<sample>& rows,
+    const bool loadPoint
 ) const
 {
     const DynamicList<const frictionStateEntry*> cols =
@@ -228,7 +251,12 @@ void Foam::frictionPointDriver::write
         {
             os  << ' ' << r.state.scalarSlot(e->slot);
         }
-        os  << ' ' << r.state.status << nl;
+        os  << ' ' << r.state.status;
+        if (loadPoint)
+        {
+            os  << ' ' << r.loadPoint;
+        }
+        os  << nl;
     }
 }
 
