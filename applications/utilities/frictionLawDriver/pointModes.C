@@ -25,6 +25,44 @@ Description
 namespace Foam
 {
 
+//- The time stepping of a point history
+struct pointHistory
+{
+    scalar p;
+    scalar dt;
+    scalar endTime;
+    label every;
+
+    explicit pointHistory(const dictionary& dict)
+    :
+        p(driverModes::contactPressure(dict)),
+        dt(driverModes::nonNegative(dict, "deltaT", true)),
+        endTime(driverModes::nonNegative(dict, "endTime", true)),
+        every(dict.getOrDefault<label>("writeInterval", 1))
+    {}
+};
+
+
+//- Slide at the rate v for runInTime (keyword of d) in steps dt, to start
+//  from steady sliding; the clock is set back to 0
+static void runIn
+(
+    frictionPointDriver& drv,
+    const dictionary& d,
+    const scalar v,
+    const scalar dt
+)
+{
+    const scalar runInTime = d.getOrDefault<scalar>("runInTime", 0);
+    const label n = label(std::ceil(runInTime/dt));
+    for (label i = 0; i < n; ++i)
+    {
+        drv.step(drv.slip() + v*dt, dt);
+    }
+    drv.setTime(0);
+}
+
+
 //- Table and plot of a point history
 static void writeRows
 (
@@ -94,27 +132,13 @@ void Foam::driverModes::prescribed
     const fileName& output
 )
 {
-    const scalar p = contactPressure(dict);
-    const scalar dt = nonNegative(dict, "deltaT", true);
-    const scalar endTime = nonNegative(dict, "endTime", true);
-    const label every = dict.getOrDefault<label>("writeInterval", 1);
+    const pointHistory h(dict);
+    const scalar p = h.p;
     const dictionary& d = dict.subDict("prescribed");
     autoPtr<Function1<scalar>> v = Function1<scalar>::New("slipRate", d);
 
     frictionPointDriver drv(law, p);
-
-    // Optional run-in at the initial rate, to start from steady sliding
-    const scalar runIn = d.getOrDefault<scalar>("runInTime", 0);
-    if (runIn > 0)
-    {
-        const scalar v0 = v->value(0);
-        const label n = label(std::ceil(runIn/dt));
-        for (label i = 0; i < n; ++i)
-        {
-            drv.step(drv.slip() + v0*dt, dt);
-        }
-        drv.setTime(0);
-    }
+    runIn(drv, d, v->value(0), h.dt);
 
     // Well-posedness on the history's rates at its pressure [F21]
     if (law.nRateStates() >= 0)
@@ -122,7 +146,7 @@ void Foam::driverModes::prescribed
         scalar vMin = GREAT, vMax = 0;
         for (label i = 0; i <= 1000; ++i)
         {
-            const scalar av = mag(v->value(endTime*i/1000));
+            const scalar av = mag(v->value(h.endTime*i/1000));
             if (av > 0) { vMin = min(vMin, av); vMax = max(vMax, av); }
         }
         if (vMax > 0)
@@ -132,7 +156,7 @@ void Foam::driverModes::prescribed
     }
 
     DynamicList<frictionPointDriver::sample> rows;
-    drv.runPrescribed(v(), endTime, dt, rows, every);
+    drv.runPrescribed(v(), h.endTime, h.dt, rows, h.every);
     writeRows(dict, drv, rows, output, false);
 }
 
@@ -144,10 +168,8 @@ void Foam::driverModes::springSlider
     const fileName& output
 )
 {
-    const scalar p = contactPressure(dict);
-    const scalar dt = nonNegative(dict, "deltaT", true);
-    const scalar endTime = nonNegative(dict, "endTime", true);
-    const label every = dict.getOrDefault<label>("writeInterval", 1);
+    const pointHistory h(dict);
+    const scalar p = h.p;
     const dictionary& d = dict.subDict("springSlider");
     const scalar M = d.found("mass") ? nonNegative(d, "mass") : 0;
     const scalar k = nonNegative(d, "stiffness", true);
@@ -158,13 +180,7 @@ void Foam::driverModes::springSlider
 
     // Run-in at V(0) (steady sliding), then the spring at the steady force
     const scalar V0 = V->value(0);
-    const scalar runIn = d.getOrDefault<scalar>("runInTime", 0);
-    const label n = label(std::ceil(runIn/dt));
-    for (label i = 0; i < n; ++i)
-    {
-        drv.step(drv.slip() + V0*dt, dt);
-    }
-    drv.setTime(0);
+    runIn(drv, d, V0, h.dt);
     drv.setSpringStretch(drv.last().tT.x()/k);
 
     // Optional perturbation of the law's first own state variable (the
@@ -189,7 +205,7 @@ void Foam::driverModes::springSlider
     }
 
     DynamicList<frictionPointDriver::sample> rows;
-    drv.runSpringSlider(M, k, V(), endTime, dt, rows, every);
+    drv.runSpringSlider(M, k, V(), h.endTime, h.dt, rows, h.every);
     writeRows(dict, drv, rows, output, true);
 }
 

@@ -37,9 +37,10 @@ Foam::frictionStateLayout::frictionStateLayout()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::frictionStateLayout::addScalar
+void Foam::frictionStateLayout::add
 (
     const word& name,
+    const frictionStateEntry::kindType kind,
     const label j,
     const dimensionSet& dims,
     const bool write,
@@ -47,42 +48,21 @@ void Foam::frictionStateLayout::addScalar
     const word& oldName
 )
 {
-    if (j < 0 || j >= frictionState::nScalars || found(name))
+    const label n =
+        kind == frictionStateEntry::VECTOR
+      ? frictionState::nVectors
+      : frictionState::nScalars;
+    if (kind == frictionStateEntry::STATUS || j < 0 || j >= n || found(name))
     {
         FatalErrorInFunction
             << "state variable " << name << ": slot " << j << " outside [0, "
-            << frictionState::nScalars << ") or name declared twice"
+            << n << "), name declared twice or a second status"
             << abort(FatalError);
     }
     entries_.append
     (
-        {name, frictionStateEntry::SCALAR, frictionState::firstLawSlot + j,
-            dims.values(), write, show, oldName}
-    );
-}
-
-
-void Foam::frictionStateLayout::addVector
-(
-    const word& name,
-    const label j,
-    const dimensionSet& dims,
-    const bool write,
-    const bool show,
-    const word& oldName
-)
-{
-    if (j < 0 || j >= frictionState::nVectors || found(name))
-    {
-        FatalErrorInFunction
-            << "state variable " << name << ": slot " << j << " outside [0, "
-            << frictionState::nVectors << ") or name declared twice"
-            << abort(FatalError);
-    }
-    entries_.append
-    (
-        {name, frictionStateEntry::VECTOR, frictionState::firstLawSlot + j,
-            dims.values(), write, show, oldName}
+        {name, kind, frictionState::firstLawSlot + j, dims.values(), write,
+            show, oldName}
     );
 }
 
@@ -147,24 +127,34 @@ Foam::word Foam::frictionStateLayout::column(const frictionStateEntry& e)
 }
 
 
+const Foam::frictionStateEntry& Foam::frictionStateLayout::entry
+(
+    const word& name,
+    const bool vectorKind
+) const
+{
+    const frictionStateEntry& e = entry(name);
+    if ((e.kind == frictionStateEntry::VECTOR) != vectorKind)
+    {
+        FatalErrorInFunction
+            << "state variable '" << name << "' is "
+            << (vectorKind ? "not " : "") << "a vector" << exit(FatalError);
+    }
+    return e;
+}
+
+
 Foam::scalar Foam::frictionStateLayout::value
 (
     const frictionState& s,
     const word& name
 ) const
 {
-    const frictionStateEntry& e = entry(name);
-    if (e.kind == frictionStateEntry::STATUS)
-    {
-        return s.status;
-    }
-    if (e.kind == frictionStateEntry::VECTOR)
-    {
-        FatalErrorInFunction
-            << "state variable '" << name << "' is a vector"
-            << exit(FatalError);
-    }
-    return s.scalarSlot(e.slot);
+    const frictionStateEntry& e = entry(name, false);
+    return
+        e.kind == frictionStateEntry::STATUS
+      ? scalar(s.status)
+      : s.scalarSlot(e.slot);
 }
 
 
@@ -175,20 +165,14 @@ void Foam::frictionStateLayout::setValue
     const scalar v
 ) const
 {
-    const frictionStateEntry& e = entry(name);
+    const frictionStateEntry& e = entry(name, false);
     if (e.kind == frictionStateEntry::STATUS)
     {
         s.status = label(v + 0.5);
     }
-    else if (e.kind == frictionStateEntry::SCALAR)
-    {
-        s.scalarSlot(e.slot) = v;
-    }
     else
     {
-        FatalErrorInFunction
-            << "state variable '" << name << "' is a vector"
-            << exit(FatalError);
+        s.scalarSlot(e.slot) = v;
     }
 }
 
@@ -199,14 +183,7 @@ const Foam::vector& Foam::frictionStateLayout::vectorValue
     const word& name
 ) const
 {
-    const frictionStateEntry& e = entry(name);
-    if (e.kind != frictionStateEntry::VECTOR)
-    {
-        FatalErrorInFunction
-            << "state variable '" << name << "' is not a vector"
-            << exit(FatalError);
-    }
-    return s.vectorSlot(e.slot);
+    return s.vectorSlot(entry(name, true).slot);
 }
 
 
@@ -217,14 +194,7 @@ void Foam::frictionStateLayout::setVectorValue
     const vector& v
 ) const
 {
-    const frictionStateEntry& e = entry(name);
-    if (e.kind != frictionStateEntry::VECTOR)
-    {
-        FatalErrorInFunction
-            << "state variable '" << name << "' is not a vector"
-            << exit(FatalError);
-    }
-    s.vectorSlot(e.slot) = v;
+    s.vectorSlot(entry(name, true).slot) = v;
 }
 
 

@@ -40,8 +40,16 @@ Foam::frictionLaws::curnier::curnier(const dictionary& dict)
     direction1_(1, 0, 0)
 {
     // [F25]: DS_T since the contact formed (tear force), DS_N while open
-    layout_.addVector("tearSlip", tearSlot, dimLength, true, false);
-    layout_.addScalar("normalSlip", normalSlipSlot, dimLength, true, false);
+    layout_.add
+    (
+        "tearSlip", frictionStateEntry::VECTOR, tearSlot, dimLength, true,
+        false
+    );
+    layout_.add
+    (
+        "normalSlip", frictionStateEntry::SCALAR, normalSlipSlot, dimLength,
+        true, false
+    );
 
     const word crit(dict.get<word>("criterion"));
     if (crit == "coulomb")

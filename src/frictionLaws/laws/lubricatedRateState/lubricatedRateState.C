@@ -68,10 +68,15 @@ Foam::frictionLaws::lubricatedRateState::lubricatedRateState
 
     // The lubrication weight is a state variable with a film memory
     // [F30] (written for restart), an output of the rate otherwise
-    layout_.addScalar("contactAge", thetaSlot, dimTime, true, true);
-    layout_.addScalar
+    layout_.add
     (
-        "lubricationWeight", alphaSlot, dimless, Df_ > 0, true
+        "contactAge", frictionStateEntry::SCALAR, thetaSlot, dimTime, true,
+        true
+    );
+    layout_.add
+    (
+        "lubricationWeight", frictionStateEntry::SCALAR, alphaSlot, dimless,
+        Df_ > 0, true
     );
 
     // Well-posedness at input time [F21], on the rates and pressures the

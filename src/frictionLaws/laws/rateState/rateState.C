@@ -54,10 +54,10 @@ Foam::frictionLaws::rateState::rateState(const dictionary& dict)
         frictionParameters::positive(dict, "initialSlipRate", VStar_);
     phiInit_ = stateLaw_->steadyState(v0);
 
-    layout_.addScalar
+    layout_.add
     (
-        stateLaw_->stateName(), phiSlot, stateLaw_->stateDimensions(), true,
-        true, stateLaw_->oldStateName()
+        stateLaw_->stateName(), frictionStateEntry::SCALAR, phiSlot,
+        stateLaw_->stateDimensions(), true, true, stateLaw_->oldStateName()
     );
 }
 
