@@ -12,7 +12,6 @@ Description
 #include "addToRunTimeSelectionTable.H"
 #include "volFields.H"
 #include "OFstream.H"
-#include "frictionStateEntries.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -73,22 +72,47 @@ void Foam::frictionalContactFvPatchVectorField::updateFields() const
             .boundaryFieldRef()[pi];
     };
 
-    using namespace frictionStateEntries;
-    scalarOut("contactAge", dimTime) = member(state_, &frictionState::contactAge);
-    scalarOut("lubricationWeight", dimless) =
-        member(state_, &frictionState::lubricationWeight);
-    scalarOut("slipRate", dimVelocity) =
-        member(state_, &frictionState::slipRate);
-    scalarOut(statusKeyword, dimless) = status(state_);
-    scalarOut("cumulatedSlip", dimLength) =
-        member(state_, &frictionState::cumulatedSlip);
-    vectorOut("plasticSlip", dimLength) =
-        member(state_, &frictionState::plasticSlip);
+    // The law's state variables it marks shown
+    for (const frictionStateEntry& e : layout_.entries())
+    {
+        if (!e.show)
+        {
+            continue;
+        }
+        if (e.kind == frictionStateEntry::VECTOR)
+        {
+            vectorOut(e.name, dimensionSet(e.dimensions)) = layout_.vectorValues(state_, e);
+        }
+        else
+        {
+            scalarOut(e.name, dimensionSet(e.dimensions)) = layout_.scalarValues(state_, e);
+        }
+    }
     scalarOut("contactPressure", dimPressure) = contactPressure_;
     scalarOut("nominalContactPressure", dimPressure) =
         nominalContactPressure_;
     vectorOut("frictionTraction", dimPressure) = frictionTraction_;
     scalarOut("penetration", dimLength) = penetration_;
+}
+
+
+void Foam::frictionalContactFvPatchVectorField::sampleSensitivity
+(
+    const frictionResult& res
+)
+{
+    // [F21] at the face's own pressure, sliding rate and state
+    const frictionLaw& l = law();
+    if (l.nRateStates() >= 0 && res.state.status == frictionState::SLIP)
+    {
+        frictionLaw::rateStates x(scalar(0));
+        l.rateStatesOf(res.state, x);
+        sensitivity_.add
+        (
+            l.rateSensitivity(res.state.slipRate, x, res.tN),
+            res.state.slipRate, res.tN
+        );
+    }
 }
 
 
@@ -222,6 +246,7 @@ void Foam::frictionalContactFvPatchVectorField::commit
     maxPenetrationAt_ = Zero;
     nContact_ = 0;
     nSlip_ = 0;
+    sensitivity_ = frictionLaw::sensitivitySummary();
 
     frictionResult res;
     vector n;
@@ -249,6 +274,7 @@ void Foam::frictionalContactFvPatchVectorField::commit
                 if (res.state.status == 2)
                 {
                     ++nSlip_;
+                    sampleSensitivity(res);
                 }
                 const scalar pen = max(-gap, scalar(0));
                 if (pen > maxPenetration_)
@@ -276,6 +302,24 @@ void Foam::frictionalContactFvPatchVectorField::commit
     reduce(frictionForce_, sumOp<vector>());
     reduce(nContact_, sumOp<label>());
     reduce(nSlip_, sumOp<label>());
+    {
+        frictionLaw::sensitivitySummary& s = sensitivity_;
+        const scalar localMin = s.minimum;
+        reduce(s.minimum, minOp<scalar>());
+        if (localMin != s.minimum)
+        {
+            s.vAtMin = -GREAT;
+            s.pAtMin = -GREAT;
+        }
+        reduce(s.vAtMin, maxOp<scalar>());
+        reduce(s.pAtMin, maxOp<scalar>());
+        reduce(s.nSampled, sumOp<label>());
+        reduce(s.nNegative, sumOp<label>());
+        reduce(s.vNegMin, minOp<scalar>());
+        reduce(s.vNegMax, maxOp<scalar>());
+        reduce(s.pNegMin, minOp<scalar>());
+        reduce(s.pNegMax, maxOp<scalar>());
+    }
     {
         // location of the largest penetration over all processors
         scalarList pens(Pstream::nProcs(), scalar(0));
@@ -308,6 +352,27 @@ void Foam::frictionalContactFvPatchVectorField::report
         << " penetration " << maxPenetration_ << " m at "
         << maxPenetrationAt_ << endl;
 
+    // [F21] sliding faces with a negative instantaneous rate sensitivity
+    const frictionLaw::sensitivitySummary& s = sensitivity_;
+    if (s.nNegative)
+    {
+        if (!illPosedWarned_)
+        {
+            law().warnIllPosed
+            (
+                s,
+                "sliding faces of patch " + patch().name() + " at t = "
+              + name(k.time)
+            );
+            illPosedWarned_ = true;
+        }
+        Info<< "    contact " << patch().name() << ": ill-posed sliding on "
+            << s.nNegative << " of " << s.nSampled << " sliding faces"
+            << " (d tT/d ln v < 0 at tN " << s.pNegMin << " to "
+            << s.pNegMax << " Pa, v " << s.vNegMin << " to " << s.vNegMax
+            << " m/s; min " << s.minimum << " Pa)" << endl;
+    }
+
     // [C2c] obstacle searches since the last report (this step and any
     // cut-back attempts before it)
     const labelPair n
@@ -335,22 +400,8 @@ void Foam::frictionalContactFvPatchVectorField::write(Ostream& os) const
     os.writeEntry("contactSmoothing", contactSmoothing_);
     os.writeEntry("searchRefreshFraction", searchRefreshFraction_);
 
-    // Face state for restart; none when it is not the law's (a utility
-    // without the law, e.g. decomposePar of time 0: written zeros would be
-    // read back as a contact age of 0 instead of the fresh contact's)
-    using namespace frictionStateEntries;
-    if (stateKnown_)
-    {
-        for (const auto& e : vectors)
-        {
-            member(state_, e.second)().writeEntry(e.first, os);
-        }
-        for (const auto& e : scalars)
-        {
-            member(state_, e.second)().writeEntry(e.first, os);
-        }
-        status(state_)().writeEntry(statusKeyword, os);
-    }
+    // Face state for restart, as the law declares it
+    layout_.write(os, state_);
     dissipation_.writeEntry("dissipatedEnergy", os);
     writeEntry("value", os);
 }
