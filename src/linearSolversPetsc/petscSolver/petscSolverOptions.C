@@ -1,0 +1,480 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+
+Description
+    Keywords, PETSc's options database and the check for unused options.
+
+\*---------------------------------------------------------------------------*/
+
+#include "petscSolver.H"
+#include "petscSession.H"
+#include "HashSet.H"
+#include <algorithm>
+#include <cctype>
+#include <iomanip>
+#include <sstream>
+
+// * * * * * * * * * * * * * * * * Local helpers * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Options (full names, lower case) that this library has put into the
+//  database, from a dictionary or as a default: a solver built with the
+//  same prefix replaces them, while the others came from PETSC_OPTIONS or a
+//  petscrc file and win over the dictionary
+Foam::HashSet<std::string> setHere;
+
+std::string lowerCase(std::string s)
+{
+    std::transform
+    (
+        s.begin(), s.end(), s.begin(),
+        [](unsigned char c) { return std::tolower(c); }
+    );
+    return s;
+}
+
+bool present(const std::string& name)
+{
+    PetscBool found = PETSC_FALSE;
+    PetscOptionsHasName(nullptr, nullptr, ("-" + name).c_str(), &found);
+    return found;
+}
+
+//- The value of a one-token entry as PETSc reads it ("" = no value)
+bool tokenText(const Foam::token& t, std::string& text)
+{
+    if (t.isWord())
+    {
+        text = t.wordToken();
+    }
+    else if (t.isString())
+    {
+        text = t.stringToken();
+    }
+    else if (t.isLabel())
+    {
+        text = std::to_string(t.labelToken());
+    }
+    else if (t.isNumber())
+    {
+        std::ostringstream os;
+        os << std::setprecision(15) << t.number();
+        text = os.str();
+    }
+    else if (t.isBool())
+    {
+        text = t.boolToken() ? "true" : "false";
+    }
+    else
+    {
+        return false;
+    }
+    return true;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::word Foam::linearSolvers::petscSolver::defaultPrefix
+(
+    const dictionary& dict
+)
+{
+    // PETSc prefixes are letters, digits and underscores
+    std::string name =
+        &dict.parent() != &dictionary::null
+      ? std::string(dict.parent().dictName()) : std::string("linearSolver");
+    for (char& c : name)
+    {
+        if (!std::isalnum(static_cast<unsigned char>(c)))
+        {
+            c = '_';
+        }
+    }
+    return word(name + "_");
+}
+
+
+void Foam::linearSolvers::petscSolver::readKeywords()
+{
+    static const wordHashSet keywords
+    {
+        "type", "ksp", "preconditioner", "maxIterations", "view", "prefix",
+        "options", "directCellLimit"
+    };
+    static const wordList ksps{"gmres", "fgmres", "cg", "bcgs", "preonly"};
+    static const wordList pcs
+    {
+        "gamg", "boomerAMG", "ml", "mumps", "ilu", "bjacobi", "jacobi",
+        "none"
+    };
+
+    for (const entry& e : dict_)
+    {
+        if (!keywords.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Unknown keyword '" << e.keyword() << "' in dictionary "
+                << dict_.name() << " (linear solver petsc)" << nl
+                << "Valid keywords: " << keywords.sortedToc() << nl
+                << "Raw PETSc options go into the sub-dictionary 'options'"
+                << exit(FatalIOError);
+        }
+    }
+
+    for (const char c : prefix_)
+    {
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_')
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Keyword 'prefix' in dictionary " << dict_.name()
+                << " is '" << prefix_ << "': a PETSc options prefix has"
+                << " letters, digits and underscores only"
+                << exit(FatalIOError);
+        }
+    }
+
+    kspName_ = dict_.lookupOrDefault<word>("ksp", "gmres");
+    if (!ksps.found(kspName_))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Unknown value '" << kspName_ << "' of keyword 'ksp' in"
+            << " dictionary " << dict_.name() << nl
+            << "Valid values: " << ksps << " (others through options"
+            << " { ksp_type ...; })" << exit(FatalIOError);
+    }
+
+    // Default: GAMG with the rigid-body near-null space, measured fastest
+    // on 3-D and 2-D elastic operators (tests/benchmarks/linearSolvers)
+    pcName_ = dict_.lookupOrDefault<word>("preconditioner", "gamg");
+    if (!pcs.found(pcName_))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Unknown value '" << pcName_ << "' of keyword"
+            << " 'preconditioner' in dictionary " << dict_.name() << nl
+            << "Valid values: " << pcs << " (others through options"
+            << " { pc_type ...; })" << exit(FatalIOError);
+    }
+
+    maxIterations_ = dict_.lookupOrDefault<label>("maxIterations", 500);
+    if (maxIterations_ < 1)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Keyword 'maxIterations' in dictionary " << dict_.name()
+            << " is " << maxIterations_ << ": at least 1 expected"
+            << exit(FatalIOError);
+    }
+    view_ = dict_.lookupOrDefault<bool>("view", false);
+}
+
+
+void Foam::linearSolvers::petscSolver::createKsp()
+{
+    check(KSPCreate(PETSC_COMM_WORLD, &ksp_), "creating the Krylov solver");
+    check
+    (
+        KSPSetOptionsPrefix(ksp_, prefix_.c_str()),
+        "setting the options prefix"
+    );
+
+    check(KSPSetType(ksp_, kspName_.c_str()), "setting the Krylov method");
+    check
+    (
+        KSPSetTolerances
+        (
+            ksp_, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, maxIterations_
+        ),
+        "setting maxIterations"
+    );
+
+    PC pc = nullptr;
+    check(KSPGetPC(ksp_, &pc), "getting the preconditioner");
+    const char* pcType = PCNONE;
+    if (pcName_ == "gamg") pcType = PCGAMG;
+    else if (pcName_ == "boomerAMG") pcType = PCHYPRE;
+    else if (pcName_ == "ml") pcType = PCML;
+    else if (pcName_ == "mumps") pcType = PCLU;
+    else if (pcName_ == "ilu" || pcName_ == "bjacobi") pcType = PCBJACOBI;
+    else if (pcName_ == "jacobi") pcType = PCJACOBI;
+    check(PCSetType(pc, pcType), "setting the preconditioner");
+
+    if (pcName_ == "boomerAMG")
+    {
+        check(PCHYPRESetType(pc, "boomeramg"), "setting hypre's method");
+
+        // hypre's recommendations for 3-D problems (HMIS coarsening,
+        // extended+i interpolation truncated to 4 entries, strength 0.5):
+        // less memory and set-up time than PETSc's defaults on 3-D elastic
+        // operators; nodal coarsening with the rigid-body modes in the
+        // interpolation was 10-30 times slower and took 5-20 times the
+        // memory (tests/benchmarks/linearSolvers)
+        if (matrix_.nComponents() == 3)
+        {
+            setDefaultOption("pc_hypre_boomeramg_strong_threshold", "0.5");
+            setDefaultOption("pc_hypre_boomeramg_coarsen_type", "HMIS");
+            setDefaultOption("pc_hypre_boomeramg_interp_type", "ext+i");
+            setDefaultOption("pc_hypre_boomeramg_P_max", "4");
+        }
+    }
+    else if (pcName_ == "mumps")
+    {
+        check
+        (
+            PCFactorSetMatSolverType(pc, MATSOLVERMUMPS),
+            "selecting MUMPS"
+        );
+    }
+
+    // The options (dictionary, PETSC_OPTIONS) override the above
+    check
+    (
+        KSPSetFromOptions(ksp_),
+        "reading the options (entries of 'options', PETSC_OPTIONS)"
+    );
+    setResidualNorm();
+}
+
+
+void Foam::linearSolvers::petscSolver::setResidualNorm()
+{
+    KSPType type = nullptr;
+    check(KSPGetType(ksp_, &type), "querying the Krylov method");
+    const std::string method(type);
+    if (method == KSPPREONLY)
+    {
+        return;
+    }
+    check
+    (
+        KSPSetInitialGuessNonzero(ksp_, PETSC_TRUE),
+        "setting the initial guess"
+    );
+
+    if (present(prefix_ + "ksp_norm_type") || present(prefix_ + "ksp_pc_side"))
+    {
+        return;
+    }
+    if (method == KSPGMRES || method == KSPBCGS)
+    {
+        check(KSPSetPCSide(ksp_, PC_RIGHT), "setting the preconditioner side");
+    }
+    if
+    (
+        method == KSPGMRES || method == KSPBCGS || method == KSPFGMRES
+     || method == KSPCG
+    )
+    {
+        check
+        (
+            KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED),
+            "setting the residual norm"
+        );
+    }
+}
+
+
+void Foam::linearSolvers::petscSolver::insertOptions()
+{
+    // What an earlier solver of this prefix set is not this one's
+    const std::string prefix = lowerCase(prefix_);
+    for (const std::string& name : setHere.sortedToc())
+    {
+        if (name.compare(0, prefix.size(), prefix) == 0)
+        {
+            check
+            (
+                PetscOptionsClearValue(nullptr, ("-" + name).c_str()),
+                "clearing an option"
+            );
+            setHere.erase(name);
+        }
+    }
+
+    if (!dict_.found("options"))
+    {
+        return;
+    }
+    if (!dict_.isDict("options"))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Keyword 'options' in dictionary " << dict_.name()
+            << " must be a sub-dictionary of PETSc options, e.g."
+            << " options { pc_gamg_threshold 0.02; }" << exit(FatalIOError);
+    }
+    const dictionary& options = dict_.subDict("options");
+
+    for (const entry& e : options)
+    {
+        std::string key = e.keyword();
+        key.erase(0, key.find_first_not_of('-'));
+
+        std::string value;
+        const bool oneToken =
+            e.isStream() && e.stream().size() == 1
+         && tokenText(e.stream()[0], value);
+        if (!oneToken)
+        {
+            FatalIOErrorInFunction(options)
+                << "Entry '" << e.keyword() << "' of 'options' in"
+                << " dictionary " << dict_.name() << ": one value expected"
+                << " (quote a value with spaces or '/', use \"\" for an"
+                << " option without value)" << exit(FatalIOError);
+        }
+
+        const std::string name = prefix_ + key;
+        if (present(name))
+        {
+            Info<< "Linear solver petsc: -" << name.c_str()
+                << " from PETSC_OPTIONS overrides options/" << e.keyword()
+                << " of " << dict_.name() << endl;
+        }
+        else
+        {
+            check
+            (
+                PetscOptionsSetValue
+                (
+                    nullptr, ("-" + name).c_str(),
+                    value.empty() ? nullptr : value.c_str()
+                ),
+                "setting an option"
+            );
+            setHere.insert(lowerCase(name));
+        }
+        dictOptions_.emplace_back(lowerCase(name), e.keyword());
+    }
+}
+
+
+void Foam::linearSolvers::petscSolver::setDefaultOption
+(
+    const std::string& option,
+    const char* value
+)
+{
+    const std::string name = prefix_ + option;
+    if
+    (
+        std::find
+        (
+            defaultOptions_.begin(), defaultOptions_.end(), lowerCase(name)
+        )
+     == defaultOptions_.end()
+    )
+    {
+        defaultOptions_.push_back(lowerCase(name));
+    }
+    if (!present(name))
+    {
+        check
+        (
+            PetscOptionsSetValue(nullptr, ("-" + name).c_str(), value),
+            "setting a default option"
+        );
+        setHere.insert(lowerCase(name));
+    }
+}
+
+
+void Foam::linearSolvers::petscSolver::checkUnusedOptions() const
+{
+    PetscInt n = 0;
+    char** names = nullptr;
+    char** values = nullptr;
+    check(PetscOptionsLeftGet(nullptr, &n, &names, &values), "listing options");
+
+    const std::string prefix = lowerCase(prefix_);
+    wordList fromDict;
+    DynamicList<string> fromElsewhere;
+    for (PetscInt i = 0; i < n; ++i)
+    {
+        std::string name = lowerCase(names[i]);
+        name.erase(0, name.find_first_not_of('-'));
+        if
+        (
+            name.compare(0, prefix.size(), prefix) != 0
+         || std::find(defaultOptions_.begin(), defaultOptions_.end(), name)
+         != defaultOptions_.end()
+        )
+        {
+            continue;
+        }
+        auto it = std::find_if
+        (
+            dictOptions_.begin(), dictOptions_.end(),
+            [&name](const std::pair<std::string, word>& o)
+            {
+                return o.first == name;
+            }
+        );
+        if (it != dictOptions_.end())
+        {
+            fromDict.append(it->second);
+        }
+        else
+        {
+            fromElsewhere.append("-" + name);
+        }
+    }
+    PetscOptionsLeftRestore(nullptr, &n, &names, &values);
+
+    if (fromDict.size())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "PETSc did not use the entries " << fromDict
+            << " of 'options' in dictionary " << dict_.name() << nl
+            << "They are misspelt or not options of this solver ("
+            << description_ << ")" << exit(FatalIOError);
+    }
+    if (fromElsewhere.size())
+    {
+        FatalErrorInFunction
+            << "PETSc did not use the options " << fromElsewhere
+            << " (from PETSC_OPTIONS or a petscrc file) of the linear"
+            << " solver of " << dict_.name() << nl
+            << "They are misspelt or not options of this solver ("
+            << description_ << ")" << exit(FatalError);
+    }
+}
+
+
+Foam::string Foam::linearSolvers::petscSolver::describe() const
+{
+    KSPType ksp = nullptr;
+    PC pc = nullptr;
+    PCType pcType = nullptr;
+    KSPGetType(ksp_, &ksp);
+    KSPGetPC(ksp_, &pc);
+    PCGetType(pc, &pcType);
+
+    std::string d = std::string("Krylov method ") + ksp + ", preconditioner ";
+    std::string pcs(pcType ? pcType : "none");
+    if (pcs == PCHYPRE)
+    {
+        const char* hypreType = nullptr;
+        PCHYPREGetType(pc, &hypreType);
+        pcs = "hypre " + std::string(hypreType ? hypreType : "");
+    }
+    else if (pcs == PCLU || pcs == PCCHOLESKY)
+    {
+        MatSolverType solver = nullptr;
+        PCFactorGetMatSolverType(pc, &solver);
+        pcs += " (" + std::string(solver ? solver : "petsc") + ")";
+    }
+    d += pcs;
+    if (!dict_.found("preconditioner"))
+    {
+        d += " (default)";
+    }
+    d += ", maxIterations " + std::to_string(maxIterations_)
+        + ", options prefix " + prefix_;
+    return d;
+}
+
+
+// ************************************************************************* //
