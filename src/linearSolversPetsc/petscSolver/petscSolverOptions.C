@@ -389,8 +389,7 @@ void Foam::linearSolvers::petscSolver::checkUnusedOptions() const
     check(PetscOptionsLeftGet(nullptr, &n, &names, &values), "listing options");
 
     const std::string prefix = lowerCase(prefix_);
-    wordList fromDict;
-    DynamicList<string> fromElsewhere;
+    std::string fromDict, fromElsewhere;
     for (PetscInt i = 0; i < n; ++i)
     {
         std::string name = lowerCase(names[i]);
@@ -414,31 +413,33 @@ void Foam::linearSolvers::petscSolver::checkUnusedOptions() const
         );
         if (it != dictOptions_.end())
         {
-            fromDict.append(it->second);
+            fromDict += " " + it->second;
         }
         else
         {
-            fromElsewhere.append("-" + name);
+            fromElsewhere += " -" + name;
         }
     }
     PetscOptionsLeftRestore(nullptr, &n, &names, &values);
 
+    const string hint =
+        "They are misspelt, or not options of this solver ("
+      + description_ + ");\nPETSC_OPTIONS=-help lists the options PETSc"
+        " reads (with the prefix " + prefix_ + ")";
     if (fromDict.size())
     {
-        FatalIOErrorInFunction(dict_)
-            << "PETSc did not use the entries " << fromDict
+        FatalIOErrorInFunction(dict_.subDict("options"))
+            << "PETSc did not use the entries" << fromDict.c_str()
             << " of 'options' in dictionary " << dict_.name() << nl
-            << "They are misspelt or not options of this solver ("
-            << description_ << ")" << exit(FatalIOError);
+            << hint.c_str() << exit(FatalIOError);
     }
     if (fromElsewhere.size())
     {
         FatalErrorInFunction
-            << "PETSc did not use the options " << fromElsewhere
+            << "PETSc did not use the options" << fromElsewhere.c_str()
             << " (from PETSC_OPTIONS or a petscrc file) of the linear"
             << " solver of " << dict_.name() << nl
-            << "They are misspelt or not options of this solver ("
-            << description_ << ")" << exit(FatalError);
+            << hint.c_str() << exit(FatalError);
     }
 }
 
