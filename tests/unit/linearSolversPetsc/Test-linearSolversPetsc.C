@@ -213,67 +213,74 @@ long peakMemoryKiB()
 
 // * * * * * * * * * * * * * * * * Unit tests  * * * * * * * * * * * * * * //
 
+//- Every solver of 'solvers' (ksp and preconditioner) on M: converged to
+//  relTol, against the known solution and against eigenLU (sparse LU);
+//  the outcomes in the order of 'solvers'
+List<outcome> checkSolvers
+(
+    const std::string& name,
+    const blockSparseMatrix& M,
+    const std::vector<std::pair<std::string, std::string>>& solvers
+)
+{
+    const outcome lu = solveWith("type eigenLU;", M);
+    unitTest::checkBelow
+    (
+        name + " eigenLU: max error vs x*", lu.error, tolDirect
+    );
+
+    List<outcome> outcomes;
+    for (const auto& s : solvers)
+    {
+        const std::string entries = s.first.empty() && s.second.empty()
+          ? "" : "type petsc; ksp " + s.first + "; preconditioner "
+            + s.second + ";";
+        const std::string label = name + " "
+          + (entries.empty() ? "default" : s.first + " + " + s.second);
+        const scalar tol = s.second == "mumps" ? tolDirect : tolKrylov;
+        outcomes.append(solveWith(entries, M));
+        checkSolved(label, outcomes.last(), tol);
+        unitTest::checkBelow
+        (
+            label + " vs eigenLU", maxError(outcomes.last().x, lu.x), tol
+        );
+    }
+    return outcomes;
+}
+
+
 void symmetric()
 {
     Info<< "2-D, 24 x 24 cells, nu = 0.3" << endl;
     const eo::grid g2{24, 24, 1, 0.01};
     autoPtr<blockSparseMatrix> M2 = eo::build(g2, 2e11, 0.3);
-
-    const outcome lu = solveWith("type eigenLU;", M2());
-    unitTest::checkBelow("2-D eigenLU: max error vs x*", lu.error, tolDirect);
-
-    const outcome hypre = solveWith
-        ("type petsc; ksp gmres; preconditioner boomerAMG;", M2());
-    checkSolved("2-D gmres + boomerAMG", hypre, tolKrylov);
+    const List<outcome> o2 = checkSolvers
+    (
+        "2-D", M2(),
+        {{"gmres", "boomerAMG"}, {"cg", "gamg"}, {"gmres", "mumps"}}
+    );
     unitTest::checkBelow
     (
-        "2-D gmres + boomerAMG vs eigenLU",
-        maxError(hypre.x, lu.x), tolKrylov
+        "2-D mumps: Krylov iterations", o2[2].p.iterations, 1
     );
-    checkSolved
-    (
-        "2-D cg + gamg",
-        solveWith("type petsc; ksp cg; preconditioner gamg;", M2()), tolKrylov
-    );
-    const outcome mumps =
-        solveWith("type petsc; preconditioner mumps;", M2());
-    checkSolved("2-D mumps", mumps, tolDirect);
-    unitTest::checkBelow("2-D mumps: Krylov iterations", mumps.p.iterations, 1);
 
     Info<< "3-D, 10^3 cells, nu = 0.3" << endl;
     const eo::grid g3{10, 10, 10, 0.01};
     autoPtr<blockSparseMatrix> M3 = eo::build(g3, 2e11, 0.3);
-    const outcome lu3 = solveWith("type eigenLU;", M3());
-
-    const outcome def = solveWith("", M3());
+    const List<outcome> o3 = checkSolvers
+    (
+        "3-D", M3(),
+        {
+            {"", ""}, {"gmres", "boomerAMG"}, {"cg", "gamg"}, {"gmres", "ml"},
+            {"gmres", "mumps"}
+        }
+    );
     unitTest::checkTrue
     (
         "3-D default: petsc with gamg",
-        def.description.find("gamg") != std::string::npos
+        o3[0].description.find("gamg") != std::string::npos
     );
-    checkSolved("3-D default (gmres + gamg)", def, tolKrylov);
-    checkSolved
-    (
-        "3-D gmres + boomerAMG",
-        solveWith("type petsc; preconditioner boomerAMG;", M3()), tolKrylov
-    );
-    const outcome gamg =
-        solveWith("type petsc; ksp cg; preconditioner gamg;", M3());
-    checkSolved("3-D cg + gamg", gamg, tolKrylov);
-    unitTest::checkBelow
-    (
-        "3-D cg + gamg vs eigenLU", maxError(gamg.x, lu3.x), tolKrylov
-    );
-    checkSolved
-    (
-        "3-D gmres + ml",
-        solveWith("type petsc; preconditioner ml;", M3()), tolKrylov
-    );
-    checkSolved
-    (
-        "3-D mumps",
-        solveWith("type petsc; preconditioner mumps;", M3()), tolDirect
-    );
+    const outcome& gamg = o3[2];
 
     // GAMG's near-null space: the rigid-body modes of the coordinates
     // against its default (the translations, from the block size)
@@ -330,29 +337,13 @@ void nonSymmetric()
         -(A - At).norm()/A.norm(), -0.01
     );
 
-    const outcome lu = solveWith("type eigenLU;", M());
-    const outcome hypre =
-        solveWith("type petsc; preconditioner boomerAMG;", M());
-    checkSolved("non-symmetric gmres + boomerAMG", hypre, tolKrylov);
-    unitTest::checkBelow
+    checkSolvers
     (
-        "non-symmetric boomerAMG vs eigenLU",
-        maxError(hypre.x, lu.x), tolKrylov
-    );
-    checkSolved
-    (
-        "non-symmetric gmres + gamg",
-        solveWith("type petsc; preconditioner gamg;", M()), tolKrylov
-    );
-    checkSolved
-    (
-        "non-symmetric bcgs + ilu",
-        solveWith("type petsc; ksp bcgs; preconditioner ilu;", M()), tolKrylov
-    );
-    checkSolved
-    (
-        "non-symmetric mumps",
-        solveWith("type petsc; preconditioner mumps;", M()), tolDirect
+        "non-symmetric", M(),
+        {
+            {"gmres", "boomerAMG"}, {"gmres", "gamg"}, {"bcgs", "ilu"},
+            {"gmres", "mumps"}
+        }
     );
 }
 
