@@ -19,6 +19,33 @@ namespace linearSolvers
 }
 
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- PETSc's name of a failed set-up and what it means here
+std::string explain(const PCFailedReason reason)
+{
+    std::string s = PCFailedReasons[reason];
+    switch (reason)
+    {
+        case PC_FACTOR_STRUCT_ZEROPIVOT:
+        case PC_FACTOR_NUMERIC_ZEROPIVOT:
+            return s + " (a zero pivot: the matrix is singular)";
+        case PC_FACTOR_OUTMEMORY:
+            return s + " (out of memory in the factorisation)";
+        case PC_SUBPC_ERROR:
+            return s + " (the factorisation of a processor's block failed:"
+                " zero pivot)";
+        default:
+            return s;
+    }
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::linearSolvers::petscSolver::check
@@ -139,16 +166,29 @@ bool Foam::linearSolvers::petscSolver::update()
         check(PCGetFailedReason(pc, &reason), "querying the set-up");
         if (reason != PC_NOERROR)
         {
-            setUpFailure_ = PCFailedReasons[reason];
+            setUpFailure_ = explain(reason);
         }
     }
 
     setUp_ = !returnReduce(!setUpFailure_.empty(), orOp<bool>());
     if (!setUp_)
     {
-        if (setUpFailure_.empty())
+        // Every processor reports the first failing one's reason
+        List<string> reasons(Pstream::nProcs());
+        reasons[Pstream::myProcNo()] = setUpFailure_;
+        Pstream::gatherList(reasons);
+        Pstream::scatterList(reasons);
+        forAll(reasons, proci)
         {
-            setUpFailure_ = "failed on another processor";
+            if (!reasons[proci].empty())
+            {
+                setUpFailure_ = reasons[proci];
+                if (Pstream::parRun())
+                {
+                    setUpFailure_ += " on processor " + Foam::name(proci);
+                }
+                break;
+            }
         }
         Info<< "Linear solver petsc: preconditioner set-up failed ("
             << setUpFailure_.c_str() << ")" << endl;
@@ -252,7 +292,7 @@ Foam::linearSolver::performance Foam::linearSolvers::petscSolver::solve
             PCFailedReason pcReason = PC_NOERROR;
             KSPGetPC(ksp_, &pc);
             PCGetFailedReason(pc, &pcReason);
-            p.reason += string(" (") + PCFailedReasons[pcReason] + ")";
+            p.reason += ": " + explain(pcReason);
         }
     }
 

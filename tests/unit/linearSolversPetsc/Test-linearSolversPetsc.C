@@ -494,6 +494,11 @@ int report(int argc, char* argv[])
     (
         "solvers", "list", "preconditioners (default: boomerAMG gamg mumps)"
     );
+    argList::addOption("entries", "text", "more entries of the dictionary");
+    argList::addBoolOption
+    (
+        "zeroRow", "zero the middle cell's row: a singular matrix"
+    );
     argList args(argc, argv);
 
     const label n = args.opt<label>("cells", 16);
@@ -514,6 +519,25 @@ int report(int argc, char* argv[])
     autoPtr<blockSparseMatrix> M = eo::build(g, 2e11, nu, convection);
     const scalar buildTime = wall.timeIncrement();
 
+    if (args.found("zeroRow"))
+    {
+        const label c = g.nCells()/2;
+        const label r = c - M->cellNumbering().offset(Pstream::myProcNo());
+        if (r >= 0 && r < M->nRows())
+        {
+            scalarList& v = const_cast<scalarList&>(M->values());
+            const label nc = M->nComponents();
+            for (label i = M->rowStart()[r]; i < M->rowStart()[r + 1]; ++i)
+            {
+                for (label k = 0; k < nc*nc; ++k)
+                {
+                    v[i*nc*nc + k] = 0;
+                }
+            }
+        }
+    }
+    const std::string entries = args.opt<string>("entries", "");
+
     OStringStream results;
     results << "cells " << g.nCells() << nl
         << "processors " << Pstream::nProcs() << nl
@@ -522,9 +546,11 @@ int report(int argc, char* argv[])
     {
         const outcome o = solveWith
         (
-            "type petsc; preconditioner " + pc + ";", M(), relTol, true
+            "type petsc; preconditioner " + pc + ";" + entries, M(), relTol,
+            true
         );
         results
+            << pc << "_updated " << label(o.updated) << nl
             << pc << "_converged " << label(o.p.converged && o.updated) << nl
             << pc << "_iterations " << o.p.iterations << nl
             << pc << "_residual " << o.p.relativeResidual << nl
