@@ -492,7 +492,8 @@ int report(int argc, char* argv[])
     argList::addOption("convection", "c", "non-symmetric term (default 0)");
     argList::addOption
     (
-        "solvers", "list", "preconditioners (default: boomerAMG gamg mumps)"
+        "solvers", "list",
+        "preconditioners, or eigenLU (default: boomerAMG gamg mumps)"
     );
     argList::addOption("entries", "text", "more entries of the dictionary");
     argList::addBoolOption
@@ -546,8 +547,10 @@ int report(int argc, char* argv[])
     {
         const outcome o = solveWith
         (
-            "type petsc; preconditioner " + pc + ";" + entries, M(), relTol,
-            true
+            pc == "eigenLU"
+          ? std::string("type eigenLU;")
+          : "type petsc; preconditioner " + pc + ";" + entries,
+            M(), relTol, true
         );
         results
             << pc << "_updated " << label(o.updated) << nl
