@@ -43,6 +43,17 @@ std::string explain(const PCFailedReason reason)
     }
 }
 
+//- A PETSc error of the numbers (a zero pivot, a floating-point exception,
+//  an external solver's numerical failure), which a smaller load step may
+//  avoid, unlike an error of the configuration
+bool numerical(const PetscErrorCode ierr)
+{
+    return
+        ierr == PETSC_ERR_MAT_LU_ZRPVT || ierr == PETSC_ERR_MAT_CH_ZRPVT
+     || ierr == PETSC_ERR_FP || ierr == PETSC_ERR_LIB
+     || ierr == PETSC_ERR_NOT_CONVERGED || ierr == PETSC_ERR_CONV_FAILED;
+}
+
 } // End anonymous namespace
 
 
@@ -58,7 +69,8 @@ void Foam::linearSolvers::petscSolver::check
     {
         FatalIOErrorInFunction(dict_)
             << "PETSc failed " << what << " for the linear solver of "
-            << dict_.name() << " (options prefix " << prefix_ << "):" << nl
+            << dict_.name() << " (options prefix " << options_.prefix()
+            << "):" << nl
             << "    " << petscSession::message(ierr).c_str() << nl
             << exit(FatalIOError);
     }
@@ -74,7 +86,10 @@ Foam::linearSolvers::petscSolver::petscSolver
 )
 :
     linearSolver(dict, matrix),
-    prefix_(dict.lookupOrDefault<word>("prefix", defaultPrefix(dict))),
+    options_
+    (
+        dict.lookupOrDefault<word>("prefix", defaultPrefix(dict)), dict
+    ),
     kspName_(),
     pcName_(),
     maxIterations_(500),
@@ -82,8 +97,6 @@ Foam::linearSolvers::petscSolver::petscSolver
     A_(matrix),
     ksp_(nullptr),
     r_(nullptr),
-    dictOptions_(),
-    defaultOptions_(),
     nModes_(-1),
     setUp_(false),
     setUpFailure_("update() was not called"),
@@ -93,13 +106,9 @@ Foam::linearSolvers::petscSolver::petscSolver
     petscSession::start();
     petscSession::fpeGuard guard;
 
-    check(A_.create(prefix_.c_str()), "creating the matrix");
-    check(VecDuplicate(A_.x(), &r_), "creating a vector");
     readKeywords();
-
-    // Dictionary options first: the defaults set by createKsp() give way
-    // to them and to PETSC_OPTIONS
-    insertOptions();
+    check(A_.create(options_.prefix().c_str()), "creating the matrix");
+    check(VecDuplicate(A_.x(), &r_), "creating a vector");
     createKsp();
 
     description_ = describe();
@@ -154,11 +163,15 @@ bool Foam::linearSolvers::petscSolver::update()
         ierr = KSPSetUpOnBlocks(ksp_);
     }
     setUpFailure_.clear();
-    if (ierr)
+    if (ierr && numerical(ierr))
     {
         setUpFailure_ = petscSession::message(ierr);
     }
     else
+    {
+        check(ierr, "setting up the preconditioner");
+    }
+    if (setUpFailure_.empty())
     {
         PC pc = nullptr;
         PCFailedReason reason = PC_NOERROR;
@@ -250,6 +263,10 @@ Foam::linearSolver::performance Foam::linearSolvers::petscSolver::solve
     );
 
     const PetscErrorCode ierr = KSPSolve(ksp_, bp, xp);
+    if (!numerical(ierr))
+    {
+        check(ierr, "solving");
+    }
     const std::string solveError = petscSession::message(ierr);
 
     KSPConvergedReason reason = KSP_CONVERGED_ITERATING;

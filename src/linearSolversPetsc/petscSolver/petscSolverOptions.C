@@ -3,80 +3,13 @@ License
     This file is part of triboFoam, GPL-3.0-or-later.
 
 Description
-    Keywords, PETSc's options database and the check for unused options.
+    Keywords, the Krylov solver's set-up, the check for unused options.
 
 \*---------------------------------------------------------------------------*/
 
 #include "petscSolver.H"
-#include "petscSession.H"
 #include "HashSet.H"
-#include <algorithm>
 #include <cctype>
-#include <iomanip>
-#include <sstream>
-
-// * * * * * * * * * * * * * * * * Local helpers * * * * * * * * * * * * * * //
-
-namespace
-{
-
-//- Options (full names, lower case) that this library has put into the
-//  database, from a dictionary or as a default: a solver built with the
-//  same prefix replaces them, while the others came from PETSC_OPTIONS or a
-//  petscrc file and win over the dictionary
-Foam::HashSet<std::string> setHere;
-
-std::string lowerCase(std::string s)
-{
-    std::transform
-    (
-        s.begin(), s.end(), s.begin(),
-        [](unsigned char c) { return std::tolower(c); }
-    );
-    return s;
-}
-
-bool present(const std::string& name)
-{
-    PetscBool found = PETSC_FALSE;
-    PetscOptionsHasName(nullptr, nullptr, ("-" + name).c_str(), &found);
-    return found;
-}
-
-//- The value of a one-token entry as PETSc reads it ("" = no value)
-bool tokenText(const Foam::token& t, std::string& text)
-{
-    if (t.isWord())
-    {
-        text = t.wordToken();
-    }
-    else if (t.isString())
-    {
-        text = t.stringToken();
-    }
-    else if (t.isLabel())
-    {
-        text = std::to_string(t.labelToken());
-    }
-    else if (t.isNumber())
-    {
-        std::ostringstream os;
-        os << std::setprecision(15) << t.number();
-        text = os.str();
-    }
-    else if (t.isBool())
-    {
-        text = t.boolToken() ? "true" : "false";
-    }
-    else
-    {
-        return false;
-    }
-    return true;
-}
-
-} // End anonymous namespace
-
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -127,18 +60,6 @@ void Foam::linearSolvers::petscSolver::readKeywords()
         }
     }
 
-    for (const char c : prefix_)
-    {
-        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_')
-        {
-            FatalIOErrorInFunction(dict_)
-                << "Keyword 'prefix' in dictionary " << dict_.name()
-                << " is '" << prefix_ << "': a PETSc options prefix has"
-                << " letters, digits and underscores only"
-                << exit(FatalIOError);
-        }
-    }
-
     kspName_ = dict_.lookupOrDefault<word>("ksp", "gmres");
     if (!ksps.found(kspName_))
     {
@@ -170,6 +91,25 @@ void Foam::linearSolvers::petscSolver::readKeywords()
             << exit(FatalIOError);
     }
     view_ = dict_.lookupOrDefault<bool>("view", false);
+
+    if (dict_.found("options") && !dict_.isDict("options"))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Keyword 'options' in dictionary " << dict_.name()
+            << " must be a sub-dictionary of PETSc options, e.g."
+            << " options { pc_gamg_threshold 0.02; }" << exit(FatalIOError);
+    }
+
+    // Dictionary options first: the defaults set by createKsp() give way
+    // to them and to PETSC_OPTIONS
+    check
+    (
+        options_.insert
+        (
+            dict_.found("options") ? dict_.subDict("options") : dictionary()
+        ),
+        "setting the options"
+    );
 }
 
 
@@ -178,7 +118,7 @@ void Foam::linearSolvers::petscSolver::createKsp()
     check(KSPCreate(PETSC_COMM_WORLD, &ksp_), "creating the Krylov solver");
     check
     (
-        KSPSetOptionsPrefix(ksp_, prefix_.c_str()),
+        KSPSetOptionsPrefix(ksp_, options_.prefix().c_str()),
         "setting the options prefix"
     );
 
@@ -215,10 +155,10 @@ void Foam::linearSolvers::petscSolver::createKsp()
         // memory (tests/benchmarks/linearSolvers)
         if (matrix_.nComponents() == 3)
         {
-            setDefaultOption("pc_hypre_boomeramg_strong_threshold", "0.5");
-            setDefaultOption("pc_hypre_boomeramg_coarsen_type", "HMIS");
-            setDefaultOption("pc_hypre_boomeramg_interp_type", "ext+i");
-            setDefaultOption("pc_hypre_boomeramg_P_max", "4");
+            setDefault("pc_hypre_boomeramg_strong_threshold", "0.5");
+            setDefault("pc_hypre_boomeramg_coarsen_type", "HMIS");
+            setDefault("pc_hypre_boomeramg_interp_type", "ext+i");
+            setDefault("pc_hypre_boomeramg_P_max", "4");
         }
     }
     else if (pcName_ == "mumps")
@@ -255,7 +195,7 @@ void Foam::linearSolvers::petscSolver::setResidualNorm()
         "setting the initial guess"
     );
 
-    if (present(prefix_ + "ksp_norm_type") || present(prefix_ + "ksp_pc_side"))
+    if (options_.found("ksp_norm_type") || options_.found("ksp_pc_side"))
     {
         return;
     }
@@ -278,154 +218,25 @@ void Foam::linearSolvers::petscSolver::setResidualNorm()
 }
 
 
-void Foam::linearSolvers::petscSolver::insertOptions()
-{
-    // What an earlier solver of this prefix set is not this one's
-    const std::string prefix = lowerCase(prefix_);
-    for (const std::string& name : setHere.sortedToc())
-    {
-        if (name.compare(0, prefix.size(), prefix) == 0)
-        {
-            check
-            (
-                PetscOptionsClearValue(nullptr, ("-" + name).c_str()),
-                "clearing an option"
-            );
-            setHere.erase(name);
-        }
-    }
-
-    if (!dict_.found("options"))
-    {
-        return;
-    }
-    if (!dict_.isDict("options"))
-    {
-        FatalIOErrorInFunction(dict_)
-            << "Keyword 'options' in dictionary " << dict_.name()
-            << " must be a sub-dictionary of PETSc options, e.g."
-            << " options { pc_gamg_threshold 0.02; }" << exit(FatalIOError);
-    }
-    const dictionary& options = dict_.subDict("options");
-
-    for (const entry& e : options)
-    {
-        std::string key = e.keyword();
-        key.erase(0, key.find_first_not_of('-'));
-
-        std::string value;
-        const bool oneToken =
-            e.isStream() && e.stream().size() == 1
-         && tokenText(e.stream()[0], value);
-        if (!oneToken)
-        {
-            FatalIOErrorInFunction(options)
-                << "Entry '" << e.keyword() << "' of 'options' in"
-                << " dictionary " << dict_.name() << ": one value expected"
-                << " (quote a value with spaces or '/', use \"\" for an"
-                << " option without value)" << exit(FatalIOError);
-        }
-
-        const std::string name = prefix_ + key;
-        if (present(name))
-        {
-            Info<< "Linear solver petsc: -" << name.c_str()
-                << " from PETSC_OPTIONS overrides options/" << e.keyword()
-                << " of " << dict_.name() << endl;
-        }
-        else
-        {
-            check
-            (
-                PetscOptionsSetValue
-                (
-                    nullptr, ("-" + name).c_str(),
-                    value.empty() ? nullptr : value.c_str()
-                ),
-                "setting an option"
-            );
-            setHere.insert(lowerCase(name));
-        }
-        dictOptions_.emplace_back(lowerCase(name), e.keyword());
-    }
-}
-
-
-void Foam::linearSolvers::petscSolver::setDefaultOption
+void Foam::linearSolvers::petscSolver::setDefault
 (
     const std::string& option,
     const char* value
 )
 {
-    const std::string name = prefix_ + option;
-    if
-    (
-        std::find
-        (
-            defaultOptions_.begin(), defaultOptions_.end(), lowerCase(name)
-        )
-     == defaultOptions_.end()
-    )
-    {
-        defaultOptions_.push_back(lowerCase(name));
-    }
-    if (!present(name))
-    {
-        check
-        (
-            PetscOptionsSetValue(nullptr, ("-" + name).c_str(), value),
-            "setting a default option"
-        );
-        setHere.insert(lowerCase(name));
-    }
+    check(options_.setDefault(option, value), "setting a default option");
 }
 
 
 void Foam::linearSolvers::petscSolver::checkUnusedOptions() const
 {
-    PetscInt n = 0;
-    char** names = nullptr;
-    char** values = nullptr;
-    check(PetscOptionsLeftGet(nullptr, &n, &names, &values), "listing options");
-
-    const std::string prefix = lowerCase(prefix_);
     std::string fromDict, fromElsewhere;
-    for (PetscInt i = 0; i < n; ++i)
-    {
-        std::string name = lowerCase(names[i]);
-        name.erase(0, name.find_first_not_of('-'));
-        if
-        (
-            name.compare(0, prefix.size(), prefix) != 0
-         || std::find(defaultOptions_.begin(), defaultOptions_.end(), name)
-         != defaultOptions_.end()
-        )
-        {
-            continue;
-        }
-        auto it = std::find_if
-        (
-            dictOptions_.begin(), dictOptions_.end(),
-            [&name](const std::pair<std::string, word>& o)
-            {
-                return o.first == name;
-            }
-        );
-        if (it != dictOptions_.end())
-        {
-            fromDict += " " + it->second;
-        }
-        else
-        {
-            fromElsewhere += " -" + name;
-        }
-    }
-    PetscOptionsLeftRestore(nullptr, &n, &names, &values);
+    check(options_.unused(fromDict, fromElsewhere), "listing the options");
 
     const string hint =
         "They are misspelt, or not options of this solver ("
       + description_ + ");\nPETSC_OPTIONS=-help lists the options PETSc"
-        " reads (with the prefix " + prefix_ + ")";
+        " reads (with the prefix " + options_.prefix() + ")";
     if (fromDict.size())
     {
         FatalIOErrorInFunction(dict_.subDict("options"))
@@ -472,8 +283,12 @@ Foam::string Foam::linearSolvers::petscSolver::describe() const
     {
         d += " (default)";
     }
+    MatType matType = nullptr;
+    MatGetType(A_.mat(), &matType);
+    d += ", matrix " + std::string(matType ? matType : "?")
+        + " (block size " + std::to_string(matrix_.nComponents()) + ")";
     d += ", maxIterations " + std::to_string(maxIterations_)
-        + ", options prefix " + prefix_;
+        + ", options prefix " + options_.prefix();
     return d;
 }
 

@@ -21,7 +21,9 @@ Description
       - values re-assembled with the pattern kept (M doubled): update()
         and solve() give half the known solution;
       - errors: unknown keyword, unknown keyword value, a bad raw option
-        value (FatalIOError at construction); a misspelt raw option and an
+        value (FatalIOError at construction); a combination PETSc cannot
+        set up (GAMG on a BAIJ matrix: FatalIOError at update(), not a
+        failed step; BAIJ with MUMPS solves); a misspelt raw option and an
         unused PETSC_OPTIONS entry under the prefix (error after the first
         solve); PETSC_OPTIONS overriding the dictionary; a zero row with
         MUMPS and with ILU (update() false or solve() not converged with
@@ -397,6 +399,28 @@ void errors()
                 "options { pc_hypre_boomeramg_max_iter 2; }", M()
             );
         })
+    );
+    unitTest::checkTrue
+    (
+        "a configuration PETSc cannot set up (gamg on BAIJ) -> FatalIOError",
+        throwsError
+        ([&]{
+            solveWith
+            (
+                "type petsc; preconditioner gamg; options { mat_type baij; }",
+                M()
+            );
+        })
+    );
+    checkSolved
+    (
+        "BAIJ matrix, mumps",
+        solveWith
+        (
+            "type petsc; preconditioner mumps; options { mat_type baij; }",
+            M()
+        ),
+        tolDirect
     );
     unitTest::checkTrue
     (
