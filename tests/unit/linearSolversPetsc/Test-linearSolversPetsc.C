@@ -45,15 +45,11 @@ Description
 #include "elasticBlockOperator.H"
 #include "unitTest.H"
 #include "sigFpe.H"
-#include "IStringStream.H"
-#include "OFstream.H"
-#include "clockTime.H"
-#include "cpuTime.H"
+#include "solverRuns.H"
+#include "reportMode.H"
 #include <cstdlib>
-#include <fstream>
 
 using namespace Foam;
-namespace eo = elasticBlockOperator;
 
 // * * * * * * * * * * * * * * * * Helpers  * * * * * * * * * * * * * * * * //
 
@@ -66,98 +62,6 @@ namespace
 // the direct ones
 const scalar tolKrylov = 3e-7;
 const scalar tolDirect = 3e-13;
-
-//- A linear-solver dictionary as it sits in fvSolution: solid.linearSolver
-class solverDict
-{
-    dictionary top_;
-
-public:
-
-    explicit solverDict(const std::string& entries)
-    :
-        top_(IStringStream("solid { linearSolver { " + entries + " } }")())
-    {}
-
-    const dictionary& operator()() const
-    {
-        return top_.subDict("solid").subDict("linearSolver");
-    }
-};
-
-
-struct outcome
-{
-    bool updated = false;
-    linearSolver::performance p;
-    scalar error = GREAT;       // max |x - x*| over max |x*|
-    Eigen::VectorXd x;
-    string description;
-    scalar setupWall = 0, setupCpu = 0, solveWall = 0, solveCpu = 0;
-
-    //- A second update and solve after the values changed (as at the next
-    //  Newton iteration): set-up and solve CPU time, iterations
-    scalar resetupCpu = 0, resolveCpu = 0;
-    label reiterations = 0;
-};
-
-
-scalar maxError(const Eigen::VectorXd& x, const Eigen::VectorXd& ref)
-{
-    const scalar e = x.size() ? (x - ref).cwiseAbs().maxCoeff() : 0;
-    const scalar r = ref.size() ? ref.cwiseAbs().maxCoeff() : 0;
-    return returnReduce(e, maxOp<scalar>())/returnReduce(r, maxOp<scalar>());
-}
-
-
-outcome solveWith
-(
-    const std::string& entries,
-    const blockSparseMatrix& M,
-    const scalar relTol = 1e-10,
-    const bool again = false
-)
-{
-    outcome o;
-    solverDict d(entries);
-    autoPtr<linearSolver> s = linearSolver::New(d(), M);
-    o.description = s->description();
-
-    clockTime wall;
-    cpuTime cpu;
-    o.updated = s->update();
-    o.setupWall = wall.timeIncrement();
-    o.setupCpu = cpu.cpuTimeIncrement();
-
-    const Eigen::VectorXd b = eo::rightHandSide(M);
-    o.x = Eigen::VectorXd::Zero(b.size());
-    o.p = s->solve(b, o.x, relTol);
-    o.solveWall = wall.timeIncrement();
-    o.solveCpu = cpu.cpuTimeIncrement();
-
-    o.error = maxError(o.x, eo::exactSolution(M));
-
-    if (again)
-    {
-        // Values 0.1 % larger: the same b gives x/1.001
-        scalarList& v = const_cast<scalarList&>(M.values());
-        for (scalar& vi : v) { vi *= 1.001; }
-        cpu.cpuTimeIncrement();
-        s->update();
-        o.resetupCpu = cpu.cpuTimeIncrement();
-        Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
-        o.reiterations = s->solve(b, x, relTol).iterations;
-        o.resolveCpu = cpu.cpuTimeIncrement();
-        for (scalar& vi : v) { vi /= 1.001; }
-    }
-
-    Info<< "    " << entries.c_str() << ": " << o.p.iterations
-        << " iterations, residual " << o.p.relativeResidual << ", error "
-        << o.error << (o.p.converged ? "" : " NOT CONVERGED ")
-        << o.p.reason.c_str() << endl;
-    return o;
-}
-
 
 //- Converged to relTol, and within tol of the known solution
 void checkSolved
@@ -195,21 +99,6 @@ bool throwsError(Fn f)
         return true;
     }
     return false;
-}
-
-
-long peakMemoryKiB()
-{
-    std::ifstream status("/proc/self/status");
-    std::string line;
-    while (std::getline(status, line))
-    {
-        if (line.compare(0, 6, "VmHWM:") == 0)
-        {
-            return std::atol(line.c_str() + 6);
-        }
-    }
-    return 0;
 }
 
 
@@ -501,110 +390,6 @@ void errors()
     FatalError.dontThrowExceptions();
 }
 
-
-// * * * * * * * * * * * * * * * * Report mode * * * * * * * * * * * * * * //
-
-int report(int argc, char* argv[])
-{
-    argList::noBanner();
-    argList::noCheckProcessorDirectories();
-    argList::addOption("report", "file", "write the results to file");
-    argList::addOption("cells", "n", "cells per direction (default 16)");
-    argList::addOption("dimension", "d", "2 or 3 (default 3)");
-    argList::addOption("nu", "value", "Poisson's ratio (default 0.3)");
-    argList::addOption("relTol", "value", "relative tolerance (1e-8)");
-    argList::addOption("convection", "c", "non-symmetric term (default 0)");
-    argList::addOption
-    (
-        "solvers", "list",
-        "preconditioners, or eigenLU (default: boomerAMG gamg mumps)"
-    );
-    argList::addOption("entries", "text", "more entries of the dictionary");
-    argList::addBoolOption
-    (
-        "zeroRow", "zero the middle cell's row: a singular matrix"
-    );
-    argList args(argc, argv);
-
-    const label n = args.opt<label>("cells", 16);
-    const label d = args.opt<label>("dimension", 3);
-    const scalar nu = args.opt<scalar>("nu", 0.3);
-    const scalar convection = args.opt<scalar>("convection", 0);
-    const scalar relTol = args.opt<scalar>("relTol", 1e-8);
-    const wordList solvers
-    (
-        IStringStream
-        (
-            "(" + args.opt<string>("solvers", "boomerAMG gamg mumps") + ")"
-        )()
-    );
-
-    const eo::grid g{n, n, d == 2 ? 1 : n, 1.0/n};
-    clockTime wall;
-    autoPtr<blockSparseMatrix> M = eo::build(g, 2e11, nu, convection);
-    const scalar buildTime = wall.timeIncrement();
-
-    if (args.found("zeroRow"))
-    {
-        const label c = g.nCells()/2;
-        const label r = c - M->cellNumbering().offset(Pstream::myProcNo());
-        if (r >= 0 && r < M->nRows())
-        {
-            scalarList& v = const_cast<scalarList&>(M->values());
-            const label nc = M->nComponents();
-            for (label i = M->rowStart()[r]; i < M->rowStart()[r + 1]; ++i)
-            {
-                for (label k = 0; k < nc*nc; ++k)
-                {
-                    v[i*nc*nc + k] = 0;
-                }
-            }
-        }
-    }
-    const std::string entries = args.opt<string>("entries", "");
-
-    OStringStream results;
-    results << "cells " << g.nCells() << nl
-        << "processors " << Pstream::nProcs() << nl
-        << "assemblyWall " << buildTime << nl;
-    for (const word& pc : solvers)
-    {
-        const outcome o = solveWith
-        (
-            pc == "eigenLU"
-          ? std::string("type eigenLU;")
-          : "type petsc; preconditioner " + pc + ";" + entries,
-            M(), relTol, true
-        );
-        results
-            << pc << "_updated " << label(o.updated) << nl
-            << pc << "_converged " << label(o.p.converged && o.updated) << nl
-            << pc << "_iterations " << o.p.iterations << nl
-            << pc << "_residual " << o.p.relativeResidual << nl
-            << pc << "_error " << o.error << nl
-            << pc << "_setupWall " << o.setupWall << nl
-            << pc << "_setupCpu " << returnReduce(o.setupCpu, maxOp<scalar>())
-            << nl
-            << pc << "_solveWall " << o.solveWall << nl
-            << pc << "_solveCpu " << returnReduce(o.solveCpu, maxOp<scalar>())
-            << nl
-            << pc << "_resetupCpu "
-            << returnReduce(o.resetupCpu, maxOp<scalar>()) << nl
-            << pc << "_resolveCpu "
-            << returnReduce(o.resolveCpu, maxOp<scalar>()) << nl
-            << pc << "_reiterations " << o.reiterations << nl;
-    }
-    results << "peakMemoryMiB "
-        << returnReduce(label(peakMemoryKiB()), sumOp<label>())/1024.0 << nl;
-
-    if (Pstream::master())
-    {
-        OFstream os(args["report"]);
-        os  << results.str().c_str();
-    }
-    Info<< results.str().c_str();
-    return 0;
-}
 
 } // End anonymous namespace
 
