@@ -21,11 +21,23 @@ namespace linearSolvers
 Foam::linearSolvers::eigenLU::eigenLU
 (
     const dictionary& dict,
-    const blockSparseMatrix& matrix
+    const blockSparseMatrix& matrix,
+    const bool blockJacobi
 )
 :
     linearSolver(dict, matrix),
-    analysed_(false)
+    analysed_(false),
+    blockJacobi_(blockJacobi)
+{}
+
+
+Foam::linearSolvers::eigenLU::eigenLU
+(
+    const dictionary& dict,
+    const blockSparseMatrix& matrix
+)
+:
+    eigenLU(dict, matrix, false)
 {
     if (Pstream::parRun())
     {
@@ -41,7 +53,7 @@ Foam::linearSolvers::eigenLU::eigenLU
 
 bool Foam::linearSolvers::eigenLU::update()
 {
-    A_ = matrix_.eigenMatrix();
+    A_ = blockJacobi_ ? matrix_.localBlock() : matrix_.eigenMatrix();
     if (!analysed_)
     {
         lu_.analyzePattern(A_);
