@@ -229,6 +229,30 @@ void Foam::solidDiscretisation::forcePatchKinematics
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
+Foam::solidDiscretisation::forceKinematics::forceKinematics
+(
+    const solidDiscretisation& disc,
+    const label patchi,
+    const scalar deltaT
+)
+:
+    Dface_(),
+    F_(),
+    // Dface_ and F_ are filled before k refers to them (the aggregate's
+    // clauses are evaluated in order)
+    k
+    {
+        disc.mesh_.boundary()[patchi].Sf(),
+        disc.mesh_.boundary()[patchi].Cf(),
+        (disc.forcePatchKinematics(patchi, Dface_, F_), Dface_),
+        disc.forcePatchD0_[patchi],
+        F_,
+        disc.mesh_.time().value(),
+        deltaT
+    }
+{}
+
+
 Foam::solidDiscretisation::solidDiscretisation
 (
     const dictionary& mechanicalProperties,
@@ -429,15 +453,8 @@ void Foam::solidDiscretisation::holdLinearisation(const bool on)
             continue;
         }
         // the fields hold the last evaluated iterate
-        const fvPatch& p = mesh_.boundary()[patchi];
-        vectorField Dface;
-        tensorField F;
-        forcePatchKinematics(patchi, Dface, F);
-        const solidPatchKinematics k
-        {
-            p.Sf(), p.Cf(), Dface, forcePatchD0_[patchi], F,
-            mesh_.time().value(), mesh_.time().deltaTValue()
-        };
+        const forceKinematics fk(*this, patchi, mesh_.time().deltaTValue());
+        const solidPatchKinematics& k = fk.k;
         bcs_.forcePatch(patchi).linearise(k);
     }
 }
@@ -457,21 +474,14 @@ void Foam::solidDiscretisation::commit(const scalar dt)
 
     forAll(mesh_.boundary(), patchi)
     {
-        const fvPatch& p = mesh_.boundary()[patchi];
         const solidBoundaries::patchKind kind = bcs_.kind(patchi);
 
         if (kind == solidBoundaries::FORCE)
         {
-            vectorField Dface;
-            tensorField F;
-            forcePatchKinematics(patchi, Dface, F);
-            const solidPatchKinematics k
-            {
-                p.Sf(), p.Cf(), Dface, forcePatchD0_[patchi], F,
-                mesh_.time().value(), dt
-            };
+            const forceKinematics fk(*this, patchi, dt);
+            const solidPatchKinematics& k = fk.k;
             bcs_.forcePatch(patchi).commit(k);
-            forcePatchD0_[patchi] = Dface;
+            forcePatchD0_[patchi] = k.D;
         }
         else if (kind != solidBoundaries::EMPTY)
         {
@@ -500,15 +510,8 @@ void Foam::solidDiscretisation::reportForcePatches() const
         {
             continue;
         }
-        const fvPatch& p = mesh_.boundary()[patchi];
-        vectorField Dface;
-        tensorField F;
-        forcePatchKinematics(patchi, Dface, F);
-        const solidPatchKinematics k
-        {
-            p.Sf(), p.Cf(), Dface, forcePatchD0_[patchi], F,
-            mesh_.time().value(), deltaT0_
-        };
+        const forceKinematics fk(*this, patchi, deltaT0_);
+        const solidPatchKinematics& k = fk.k;
         bcs_.forcePatch(patchi).report(k);
     }
 }

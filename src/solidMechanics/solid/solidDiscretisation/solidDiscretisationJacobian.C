@@ -363,14 +363,8 @@ void Foam::solidDiscretisation::addForcePatch
     const vectorField& d = patchDelta_[patchi];
     const solidForceBoundary& patch = bcs_.forcePatch(patchi);
 
-    vectorField Dface;
-    tensorField F;
-    forcePatchKinematics(patchi, Dface, F);
-    const solidPatchKinematics k
-    {
-        p.Sf(), p.Cf(), Dface, forcePatchD0_[patchi], F,
-        mesh_.time().value(), mesh_.time().deltaTValue()
-    };
+    const forceKinematics fk(*this, patchi, mesh_.time().deltaTValue());
+    const solidPatchKinematics& k = fk.k;
 
     List<faceForceTangent> df;
     patch.tangent(k, df);
@@ -536,14 +530,8 @@ void Foam::solidDiscretisation::meanCouplings
         const labelUList& faceCells = p.faceCells();
         const vectorField& d = patchDelta_[patchi];
 
-        vectorField Dface;
-        tensorField F;
-        forcePatchKinematics(patchi, Dface, F);
-        const solidPatchKinematics k
-        {
-            p.Sf(), p.Cf(), Dface, forcePatchD0_[patchi], F,
-            mesh_.time().value(), mesh_.time().deltaTValue()
-        };
+        const forceKinematics fk(*this, patchi, mesh_.time().deltaTValue());
+        const solidPatchKinematics& k = fk.k;
         tensorField C(faceCells.size());
         bcs_.forcePatch(patchi).meanDisplacementTangent(k, C);
 

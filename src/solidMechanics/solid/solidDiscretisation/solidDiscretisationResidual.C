@@ -39,7 +39,6 @@ void Foam::solidDiscretisation::residual(vectorField& R)
         fMag[nei[facei]] += m;
     }
 
-    const scalar t = mesh_.time().value();
     const scalar dt = mesh_.time().deltaTValue();
 
     forAll(mesh_.boundary(), patchi)
@@ -56,13 +55,8 @@ void Foam::solidDiscretisation::residual(vectorField& R)
 
         if (kind == solidBoundaries::FORCE)
         {
-            vectorField Dface;
-            tensorField F;
-            forcePatchKinematics(patchi, Dface, F);
-            const solidPatchKinematics k
-            {
-                S, p.Cf(), Dface, forcePatchD0_[patchi], F, t, dt
-            };
+            const forceKinematics fk(*this, patchi, dt);
+            const solidPatchKinematics& k = fk.k;
             vectorField f(fc.size());
             bcs_.forcePatch(patchi).force(k, f);
             forAll(fc, i)
