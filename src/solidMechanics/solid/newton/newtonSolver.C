@@ -134,11 +134,14 @@ bool Foam::newtonSolver::step
         dx.setZero(x.size());
         const scalar normR = gNorm(R);
         const linearSolver::performance perf =
-            sys.solveJacobian(R, dx, normR > 0 ? linTol/normR : 1);
+            sys.solveJacobian(R, dx, normR > 0 ? min(linTol/normR, 0.1) : 0.1);
         lastKrylov = perf.iterations;
         if (!gFinite(dx))
         {
-            res.reason = "the linear solve gave a non-finite correction";
+            res.reason =
+                perf.reason.empty()
+              ? string("the linear solve gave a non-finite correction")
+              : perf.reason;
             return false;
         }
         if (!perf.converged && verbose_)
@@ -259,11 +262,13 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
         }
 
         // Eisenstat-Walker forcing term (choice 2), no tighter than needed
-        // to reach the force tolerance
+        // to reach the force tolerance; after a step that barely lowered
+        // |R| (an active set changing) the tightest, since a loose solve
+        // with an outdated preconditioner then misleads Newton further
         if (it > 0)
         {
             const scalar ratio = normR/max(normRprev, VSMALL);
-            eta = min(0.1, max(0.9*sqr(ratio), 1e-4));
+            eta = ratio < 0.9 ? min(0.1, max(0.9*sqr(ratio), 1e-4)) : 1e-4;
         }
         const scalar linTol = max(eta*normR, 0.1*forceTol_*Fscale);
 

@@ -225,6 +225,9 @@ void Foam::totalLagrangianSolid::beginStep
     // Boundary values at the new time (uniformFixedValue and the like)
     D_.correctBoundaryConditions();
 
+    // [S19] nothing of the previous steps' linear solves carries over
+    linearSolver_->forgetHistory();
+
     pack(discretisation_.D0(), xStart);
     x = xStart;
 
