@@ -5,6 +5,7 @@ License
 
 #include "newtonSolver.H"
 #include "IOstreams.H"
+#include "cpuTime.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -126,15 +127,22 @@ bool Foam::newtonSolver::step
     {
         // [S14] exact Newton: the assembled Jacobian at x, solved to the
         // forcing term (a direct solver solves exactly)
+        cpuTime timer;
         if (!sys.updateJacobian(x))
         {
             res.reason = sys.failure();
             return false;
         }
+        const scalar tJacobian = timer.cpuTimeIncrement();
         dx.setZero(x.size());
         const scalar normR = gNorm(R);
         const linearSolver::performance perf =
             sys.solveJacobian(R, dx, normR > 0 ? min(linTol/normR, 0.1) : 0.1);
+        if (verbose_)
+        {
+            Info<< "        Jacobian " << tJacobian << " s, linear solve "
+                << timer.cpuTimeIncrement() << " s (CPU)" << endl;
+        }
         lastKrylov = perf.iterations;
         if (!gFinite(dx))
         {

@@ -5,6 +5,7 @@ License
 
 #include "totalLagrangianSolid.H"
 #include "calculatedFvPatchFields.H"
+#include "cpuTime.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -301,11 +302,13 @@ void Foam::totalLagrangianSolid::residual
 
 bool Foam::totalLagrangianSolid::updateJacobian(const Eigen::VectorXd& x)
 {
+    cpuTime timer;
     vectorField u(mesh_.nCells());
     unpack(x, u);
     discretisation_.setIterate(u);
     discretisation_.jacobian(jacobian_);
     shiftDiagonal();
+    const scalar tAssembly = timer.cpuTimeIncrement();
 
     List<vectorField> Uf;
     List<vectorField> Vf;
@@ -324,9 +327,16 @@ bool Foam::totalLagrangianSolid::updateJacobian(const Eigen::VectorXd& x)
         discretisation_.setIterate(u);
     }
 
-    return
+    const bool ok =
         linearSolver_->update()
      && meanCouplings_.update(U, V, linearSolver_());
+
+    if (debug)
+    {
+        Info<< "        Jacobian assembly " << tAssembly << " s, linear solver"
+            << " update " << timer.cpuTimeIncrement() << " s (CPU)" << endl;
+    }
+    return ok;
 }
 
 
