@@ -169,6 +169,21 @@ void Foam::frictionalContactFvPatchVectorField::readState
     {
         dissipation_ = scalarField("dissipatedEnergy", dict, n);
     }
+
+    // [C2c] the search records as written: a restart then re-projects
+    // where the uninterrupted run would (the same triangles, bit for bit)
+    if (dict.found("searchTriangle"))
+    {
+        const labelField tri("searchTriangle", dict, n);
+        const vectorField x0("searchPoint", dict, n);
+        forAll(search_, i)
+        {
+            search_[i].searched = tri[i] != -1;
+            search_[i].hit = tri[i] >= 0;
+            search_[i].hint = max(tri[i], label(-1));
+            search_[i].x0 = x0[i];
+        }
+    }
 }
 
 

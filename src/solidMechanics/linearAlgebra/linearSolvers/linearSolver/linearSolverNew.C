@@ -57,6 +57,15 @@ Foam::autoPtr<Foam::linearSolver> Foam::linearSolver::New
             << " with " << matrix.nComponents() << " unknowns per cell and "
             << nCells << " cells; directCellLimit " << directCellLimit
             << ")" << endl;
+
+        // Without the PETSc library: the serial sparse LU, or in parallel
+        // its block-Jacobi form as a preconditioner
+        if (!dictionaryConstructorTablePtr_->found(solverType))
+        {
+            solverType = Pstream::parRun() ? "blockJacobiLU" : "eigenLU";
+            Info<< "    (petsc is not built: " << solverType << " instead)"
+                << endl;
+        }
     }
 
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(solverType);
