@@ -60,7 +60,13 @@ Foam::autoPtr<Foam::linearSolver> Foam::linearSolver::New
 
         // Without the PETSc library: the serial sparse LU, or in parallel
         // its block-Jacobi form as a preconditioner
-        if (!dictionaryConstructorTablePtr_->found(solverType))
+        const char* lib = libraryOf(solverType);
+        std::string loadError;
+        if
+        (
+            !dictionaryConstructorTablePtr_->found(solverType)
+         && !(lib && Foam::dlOpen(lib, loadError))
+        )
         {
             solverType = Pstream::parRun() ? "blockJacobiLU" : "eigenLU";
             Info<< "    (petsc is not built: " << solverType << " instead)"
