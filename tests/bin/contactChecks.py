@@ -92,6 +92,14 @@ def contactState(case, time, patch):
     return faces
 
 
+def stateBefore(case, time, patch):
+    """contactState() at the written time just before 'time' (the
+    previous step when every step is written)."""
+    t = float(time)
+    earlier = [n for v, n in foamio.timeValues(case) if v < t - 1e-12*abs(t)]
+    return contactState(case, earlier[-1], patch)
+
+
 def contactRows(case, patch):
     """postProcessing/contact/<patch>.dat as {time: row}; row: time,
     normal force (3), friction force (3), dissipated energy, largest
@@ -120,25 +128,45 @@ def mag(v):
 
 
 # ------------------------------------------ the laws, face by face (checks)
-def coulombError(faces, mu, muStatic=None):
+def coulombError(faces, mu, muStatic=None, previous=None):
     """Largest violation of Coulomb's law over the faces, relative to
     mu tN: |tT| = mu tN on sliding faces [F8], |tT| <= mu_s tN on sticking
-    ones, no traction on open ones. Returns (error, nSlip, nStick, nOpen)."""
+    ones, no traction on open ones. Returns (error, nSlip, nStick, nOpen).
+
+    With the state of the previous step ('previous'), the law's status is
+    checked against the written slip: a face whose plastic slip moved over
+    the step must be sliding, and the friction on it must oppose the slip
+    increment [F8] (a return mapping that got the magnitude right but the
+    direction or the classification wrong fails). A face on the cone at
+    rest (a hold after sliding) may be called sliding at zero rate."""
     muS = mu if muStatic is None else muStatic
     err, nSlip, nStick, nOpen = 0.0, 0, 0, 0
-    for f in faces:
+    for i, f in enumerate(faces):
         t = mag(f["tT"])
         Y = mu*f["tN"]
         scale = max(Y, 1e-12*f["tN"], 1e-300)
-        if f["status"] == 2:
-            nSlip += 1
-            err = max(err, abs(t - Y)/scale)
-        elif f["status"] == 1:
-            nStick += 1
-            err = max(err, max(0.0, t - muS*f["tN"])/scale)
-        else:
+        sliding = f["status"] == 2
+        if previous is not None and f["status"] != 0:
+            dg = [a - b for a, b in zip(f["gTp"], previous[i]["gTp"])]
+            gScale = max(mag(f["gT"]), mag(previous[i]["gT"]), 1e-300)
+            moved = mag(dg) > 1e-12*gScale
+            if moved and not sliding:
+                # a face the law calls sticking has slipped
+                err = max(err, 1.0)
+            # a face may sit on the cone at rest (a hold after sliding):
+            # the law calls it sliding at zero rate, |tT| = mu tN still
+            if moved and t > 0:
+                cosine = sum(a*b for a, b in zip(f["tT"], dg))/(t*mag(dg))
+                err = max(err, 1.0 + cosine)
+        if f["status"] == 0:
             nOpen += 1
             err = max(err, (t + f["tN"])/max(1.0, f["tN"]))
+        elif sliding:
+            nSlip += 1
+            err = max(err, abs(t - Y)/scale)
+        else:
+            nStick += 1
+            err = max(err, max(0.0, t - muS*f["tN"])/scale)
     return err, nSlip, nStick, nOpen
 
 
