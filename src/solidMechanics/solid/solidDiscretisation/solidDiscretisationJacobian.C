@@ -157,7 +157,7 @@ void Foam::solidDiscretisation::addInternalFaces
         fc.addCompact(numbering.toGlobal(N), e/mag(d));
         fc.addCompact(numbering.toGlobal(P), -e/mag(d));
 
-        law_.stressAndTangent
+        laws_.cellLaw(P).stressAndTangent
         (
             fbar_.apply(F, Jbar), oldState(-1, facei), scratch, dPdF
         );
@@ -295,7 +295,7 @@ void Foam::solidDiscretisation::addBoundaryFaces
         if (kind == solidBoundaries::WEDGE)
         {
             const tensor& T = bcs_.wedgeRotation(patchi);
-            law_.stressAndTangent
+            laws_.cellLaw(P).stressAndTangent
             (
                 T & F & T.T(), oldState(patchi, i), scratch, dPdF
             );
@@ -312,7 +312,7 @@ void Foam::solidDiscretisation::addBoundaryFaces
             continue;
         }
 
-        law_.stressAndTangent
+        laws_.cellLaw(P).stressAndTangent
         (
             fbar_.apply(F, Jbar), oldState(patchi, i), scratch, dPdF
         );
@@ -491,12 +491,16 @@ void Foam::solidDiscretisation::jacobian(blockSparseMatrix& M) const
     if (inertia_)
     {
         const scalar dt = mesh_.time().deltaTValue();
-        const scalar c = 2*inertiaDensity_/(dt*(dt + deltaT0_));
+        const scalar c = 2/(dt*(dt + deltaT0_));
         const scalarField& V = mesh_.V();
         const globalIndex& numbering = grad_.cellNumbering();
         forAll(V, P)
         {
-            M.addBlock(P, numbering.toGlobal(P), (c*V[P])*tensor::I);
+            M.addBlock
+            (
+                P, numbering.toGlobal(P),
+                (c*inertiaDensity_[P]*V[P])*tensor::I
+            );
         }
     }
 }

@@ -110,7 +110,7 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
             IOobject::NO_WRITE
         )
     ),
-    law_(mechanicalLaw::New(mechanicalProperties_.subDict("mechanicalLaw"))),
+    laws_(mechanicalProperties_, mesh),
     D_
     (
         IOobject
@@ -125,7 +125,7 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
     ),
     Dprevious_(previousDisplacement(D_)),
     bcs_(D_),
-    discretisation_(mechanicalProperties_, law_(), D_, bcs_),
+    discretisation_(mechanicalProperties_, laws_, D_, bcs_),
     comps_(solvedComponents(mesh)),
     jacobian_
     (
