@@ -193,6 +193,8 @@ void Foam::deformableContactFvPatchVectorField::committedKinematics
     s.Dold = *this;
     s.D = s.Dold;
     s.F = tensorField(s.X.size(), tensor::I);
+    s.Xa = Xa_;
+    s.Xb = Xb_;
     s.a = Xa_ + s.D;
     s.b = Xb_ + s.D;
     s.area = mag(s.S0);
@@ -219,19 +221,31 @@ void Foam::deformableContactFvPatchVectorField::kinematics(side& s) const
     s.b.setSize(n);
     s.area.setSize(n);
     s.n.setSize(n);
+    s.Xa = Xa_;
+    s.Xb = Xb_;
     forAll(fc, i)
     {
         const tensor& Gi = G[fc[i]];
         s.D[i] = u[fc[i]] + ((s.X[i] - C[fc[i]]) & Gi);
         s.F[i] = tensor::I + Gi.T();
-        const point x(s.X[i] + s.D[i]);
-        s.a[i] = x + (s.F[i] & (Xa_[i] - s.X[i]));
-        s.b[i] = x + (s.F[i] & (Xb_[i] - s.X[i]));
-        // [C4] Nanson
-        const vector A(det(s.F[i])*(inv(s.F[i]).T() & s.S0[i]));
-        s.area[i] = mag(A);
-        s.n[i] = A/max(s.area[i], VSMALL);
+        faceGeometry(s, i);
     }
+}
+
+
+void Foam::deformableContactFvPatchVectorField::faceGeometry
+(
+    side& s,
+    const label i
+)
+{
+    const point x(s.X[i] + s.D[i]);
+    s.a[i] = x + (s.F[i] & (s.Xa[i] - s.X[i]));
+    s.b[i] = x + (s.F[i] & (s.Xb[i] - s.X[i]));
+    // [C4] Nanson
+    const vector A(det(s.F[i])*(inv(s.F[i]).T() & s.S0[i]));
+    s.area[i] = mag(A);
+    s.n[i] = A/max(s.area[i], VSMALL);
 }
 
 

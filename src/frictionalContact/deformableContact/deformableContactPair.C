@@ -32,35 +32,45 @@ struct faceOverlap
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::deformableContactFvPatchVectorField::evaluatePair
+void Foam::deformableContactFvPatchVectorField::candidates
 (
     const side& sl,
     const side& ms,
-    const scalar deltaT,
-    List<slaveFace>& faces
+    const scalar margin,
+    labelListList& cand
 ) const
 {
-    faces.setSize(sl.X.size());
-    const label nM = ms.X.size();
-
     // Candidates by a sweep along the direction in which the master
     // surface extends most: the master faces sorted by the lower end of
     // their interval (widened by the search distance); a slave face's
     // candidates start within one interval length before its own
     // [C11]: O(n log n)
+    const label nM = ms.X.size();
+    cand.setSize(sl.X.size());
+    if (nM == 0)
+    {
+        cand = labelList();
+        return;
+    }
     boundBox bb(ms.a, false);
     bb.add(ms.b);
     const vector span(bb.span());
     const direction ax =
         span.x() >= span.y() && span.x() >= span.z() ? 0
       : (span.y() >= span.z() ? 1 : 2);
+    scalar longest = 0;
+    forAll(ms.a, m)
+    {
+        longest = max(longest, mag(ms.b[m] - ms.a[m]));
+    }
+    const scalar widen = searchDistance_ + margin*longest;
     scalarField lo(nM);
     scalarField hi(nM);
     scalar maxLength = 0;
     forAll(lo, m)
     {
-        lo[m] = min(ms.a[m][ax], ms.b[m][ax]) - searchDistance_;
-        hi[m] = max(ms.a[m][ax], ms.b[m][ax]) + searchDistance_;
+        lo[m] = min(ms.a[m][ax], ms.b[m][ax]) - widen;
+        hi[m] = max(ms.a[m][ax], ms.b[m][ax]) + widen;
         maxLength = max(maxLength, hi[m] - lo[m]);
     }
     labelList order(identity(nM));
@@ -75,21 +85,12 @@ void Foam::deformableContactFvPatchVectorField::evaluatePair
         sortedLo[k] = lo[order[k]];
     }
 
-    DynamicList<faceOverlap> overlaps(8);
-    forAll(faces, i)
+    DynamicList<label> found(8);
+    forAll(cand, i)
     {
-        slaveFace& sf = faces[i];
-        sf = slaveFace();
-        if (heldOutOfReach(i))
-        {
-            continue;
-        }
-        const point& as = sl.a[i];
-        const point& bs = sl.b[i];
-        const scalar sLo = min(as[ax], bs[ax]);
-        const scalar sHi = max(as[ax], bs[ax]);
-
-        overlaps.clear();
+        const scalar sLo = min(sl.a[i][ax], sl.b[i][ax]);
+        const scalar sHi = max(sl.a[i][ax], sl.b[i][ax]);
+        found.clear();
         label k = label
         (
             std::lower_bound
@@ -100,85 +101,297 @@ void Foam::deformableContactFvPatchVectorField::evaluatePair
         for (; k < nM && sortedLo[k] <= sHi; ++k)
         {
             const label m = order[k];
-            if (hi[m] < sLo)
-            {
-                continue;
-            }
             // facing surfaces only
-            const vector& nm = ms.n[m];
-            if ((sl.n[i] & nm) >= 0)
+            if (hi[m] >= sLo && (sl.n[i] & ms.n[m]) < 0)
             {
-                continue;
+                found.append(m);
             }
-            const vector e(ms.b[m] - ms.a[m]);
-            const scalar Lm = mag(e);
-            if (Lm < VSMALL)
-            {
-                continue;
-            }
-            const vector tau(e/Lm);
-            const scalar xa = (as - ms.a[m]) & tau;
-            const scalar xb = (bs - ms.a[m]) & tau;
-            const scalar l0 = max(min(xa, xb), scalar(0));
-            const scalar l1 = min(max(xa, xb), Lm);
-            if (l1 <= l0)
-            {
-                continue;
-            }
-            // the gap is linear over the overlap: its midpoint value is
-            // its mean
-            const scalar xc = 0.5*(l0 + l1);
-            const scalar lambda =
-                mag(xb - xa) > VSMALL ? (xc - xa)/(xb - xa) : 0.5;
-            const point xs(as + lambda*(bs - as));
-            const point xm(ms.a[m] + xc*tau);
-            const scalar g = (xs - xm) & nm;
-            if (mag(g) > searchDistance_)
-            {
-                continue;
-            }
-            overlaps.append({m, l1 - l0, mag(xb - xa), g});
         }
+        cand[i] = found;
+    }
+}
 
-        scalar total = 0;
-        for (const faceOverlap& o : overlaps)
-        {
-            total += o.length;
-        }
-        if (total <= 0)
+
+void Foam::deformableContactFvPatchVectorField::evaluateFace
+(
+    const label i,
+    const side& sl,
+    const side& ms,
+    const labelList& cand,
+    const scalar deltaT,
+    slaveFace& sf,
+    const slaveFace* held
+) const
+{
+    sf = slaveFace();
+    if (heldOutOfReach(i))
+    {
+        return;
+    }
+    const point& as = sl.a[i];
+    const point& bs = sl.b[i];
+
+    DynamicList<faceOverlap> overlaps(8);
+    for (const label m : cand)
+    {
+        const vector& nm = ms.n[m];
+        if ((sl.n[i] & nm) >= 0)
         {
             continue;
         }
-
-        // [C10] weighted gap, normal, coverage; [C12] slip
-        sf.inReach = true;
-        sf.masters.setSize(overlaps.size());
-        sf.weights.setSize(overlaps.size());
-        sf.gap = 0;
-        vector n(Zero);
-        scalar projected = 0;
-        vector dsMaster(Zero);
-        forAll(overlaps, j)
+        const vector e(ms.b[m] - ms.a[m]);
+        const scalar Lm = mag(e);
+        if (Lm < VSMALL)
         {
-            const faceOverlap& o = overlaps[j];
-            const scalar w = o.length/total;
-            sf.masters[j] = o.master;
-            sf.weights[j] = w;
-            sf.gap += w*o.gap;
-            n += w*ms.n[o.master];
-            projected += w*o.projected;
-            dsMaster += w*(ms.D[o.master] - ms.Dold[o.master]);
+            continue;
         }
-        sf.n = n/max(mag(n), VSMALL);
-        sf.area = min(total/max(projected, VSMALL), scalar(1))*sl.area[i];
+        const vector tau(e/Lm);
+        const scalar xa = (as - ms.a[m]) & tau;
+        const scalar xb = (bs - ms.a[m]) & tau;
+        const scalar l0 = max(min(xa, xb), scalar(0));
+        const scalar l1 = min(max(xa, xb), Lm);
+        if (l1 <= l0)
+        {
+            continue;
+        }
+        // the gap is linear over the overlap: its midpoint value is its
+        // mean
+        const scalar xc = 0.5*(l0 + l1);
+        const scalar lambda =
+            mag(xb - xa) > VSMALL ? (xc - xa)/(xb - xa) : 0.5;
+        const point xs(as + lambda*(bs - as));
+        const point xm(ms.a[m] + xc*tau);
+        const scalar g = (xs - xm) & nm;
+        if (mag(g) > searchDistance_)
+        {
+            continue;
+        }
+        overlaps.append({m, l1 - l0, mag(xb - xa), g});
+    }
 
-        const vector ds((sl.D[i] - sl.Dold[i]) - dsMaster);
-        frictionInput& in = sf.input;
-        in.gN = smoothedPenetration(-sf.gap);
-        in.gT = (tensor::I - sqr(sf.n)) & (state()[i].totalSlip + ds);
-        in.n = sf.n;
-        in.dt = deltaT;
+    scalar total = 0;
+    for (const faceOverlap& o : overlaps)
+    {
+        total += o.length;
+    }
+    if (total <= 0)
+    {
+        return;
+    }
+
+    // [C10] weighted gap, normal, coverage; [C12] slip
+    sf.inReach = true;
+    sf.masters.setSize(overlaps.size());
+    sf.weights.setSize(overlaps.size());
+    sf.gap = 0;
+    vector n(Zero);
+    scalar projected = 0;
+    vector dsMaster(Zero);
+    forAll(overlaps, j)
+    {
+        const faceOverlap& o = overlaps[j];
+        const scalar w = o.length/total;
+        sf.masters[j] = o.master;
+        sf.weights[j] = w;
+        sf.gap += w*o.gap;
+        n += w*ms.n[o.master];
+        projected += w*o.projected;
+        dsMaster += w*(ms.D[o.master] - ms.Dold[o.master]);
+    }
+    sf.n = n/max(mag(n), VSMALL);
+    sf.area = min(total/max(projected, VSMALL), scalar(1))*sl.area[i];
+
+    const vector ds((sl.D[i] - sl.Dold[i]) - dsMaster);
+    frictionInput& in = sf.input;
+    in.gN = smoothedPenetration(-sf.gap);
+    in.gT = (tensor::I - sqr(sf.n)) & (state()[i].totalSlip + ds);
+    in.n = sf.n;
+    in.dt = deltaT;
+    if (held)
+    {
+        // the law's consistent tangent at the held result [F7]
+        const frictionInput& in0 = held->input;
+        sf.result = held->result;
+        const scalar dgN = in.gN - in0.gN;
+        const vector dgT(in.gT - in0.gT);
+        sf.result.tN += sf.result.dtNdgN*dgN;
+        sf.result.tT += (sf.result.dtTdgT & dgT) + sf.result.dtTdgN*dgN;
+    }
+    else
+    {
         faceUpdate(i, in, sf.result);
+    }
+}
+
+
+void Foam::deformableContactFvPatchVectorField::evaluatePair
+(
+    const side& sl,
+    const side& ms,
+    const scalar deltaT,
+    List<slaveFace>& faces
+) const
+{
+    labelListList cand;
+    candidates(sl, ms, 0, cand);
+    faces.setSize(sl.X.size());
+    forAll(faces, i)
+    {
+        evaluateFace(i, sl, ms, cand[i], deltaT, faces[i]);
+    }
+}
+
+
+void Foam::deformableContactFvPatchVectorField::pairTangent
+(
+    const scalar deltaT,
+    List<faceForceTangent>& slaveOwn,
+    List<faceForceTangent>& masterOwn,
+    DynamicList<faceCoupling>& slaveCoupling,
+    DynamicList<faceCoupling>& masterCoupling
+) const
+{
+    // [C13] for every slave face in contact: the derivatives of its force
+    // f_s and of its share -w_sm f_s of each master face's force with
+    // respect to the kinematics (D, F) of the faces it involves (itself and
+    // the masters it overlaps), by central differences of the face's
+    // geometry with the law linear about its result (the law's consistent
+    // tangent, [F7]): face-local, so a handful of face evaluations per
+    // face and derivative
+    const deformableContactFvPatchVectorField& m = partner();
+    const label slavePatch = patch().index();
+    const label masterPatch = m.patch().index();
+
+    side sl;
+    side ms;
+    kinematics(sl);
+    m.kinematics(ms);
+    labelListList cand;
+    candidates(sl, ms, 0, cand);
+
+    slaveOwn.setSize(sl.X.size());
+    slaveOwn = faceForceTangent();
+    masterOwn.setSize(ms.X.size());
+    masterOwn = faceForceTangent();
+    slaveCoupling.clear();
+    masterCoupling.clear();
+
+    // the outputs of slave face i: f_s and -w_sm f_s for the base masters
+    auto outputs = [](const slaveFace& sf, const labelList& masters,
+        List<vector>& out)
+    {
+        out.setSize(1 + masters.size());
+        out = Zero;
+        if (!sf.inReach)
+        {
+            return;
+        }
+        const vector f(sf.area*(sf.result.tN*sf.n - sf.result.tT));
+        out[0] = f;
+        forAll(masters, j)
+        {
+            const label k = sf.masters.find(masters[j]);
+            if (k >= 0)
+            {
+                out[1 + j] = -sf.weights[k]*f;
+            }
+        }
+    };
+
+    List<vector> outP;
+    List<vector> outM;
+    List<faceForceTangent> d;
+    forAll(sl.X, i)
+    {
+        slaveFace base;
+        evaluateFace(i, sl, ms, cand[i], deltaT, base);
+        if (!base.inReach)
+        {
+            continue;
+        }
+        const labelList masters(base.masters);
+        const label nOut = 1 + masters.size();
+
+        // inputs: the slave face (-1) and its masters
+        for (label inp = -1; inp < masters.size(); ++inp)
+        {
+            side& s = inp < 0 ? sl : ms;
+            const label fi = inp < 0 ? i : masters[inp];
+            const scalar hD = 1e-6*mag(s.b[fi] - s.a[fi]);
+            const scalar hF = 1e-6;
+            const vector D0(s.D[fi]);
+            const tensor F0(s.F[fi]);
+
+            d.setSize(nOut);
+            d = faceForceTangent();
+            for (direction c = 0; c < 12; ++c)
+            {
+                const scalar h = c < 3 ? hD : hF;
+                for (const scalar sign : {1.0, -1.0})
+                {
+                    if (c < 3)
+                    {
+                        s.D[fi] = D0;
+                        s.D[fi][c] += sign*h;
+                    }
+                    else
+                    {
+                        s.F[fi] = F0;
+                        s.F[fi][c - 3] += sign*h;
+                    }
+                    faceGeometry(s, fi);
+                    slaveFace sf;
+                    evaluateFace(i, sl, ms, cand[i], deltaT, sf, &base);
+                    outputs(sf, masters, sign > 0 ? outP : outM);
+                }
+                s.D[fi] = D0;
+                s.F[fi] = F0;
+                faceGeometry(s, fi);
+
+                forAll(d, o)
+                {
+                    const vector dOut((outP[o] - outM[o])/(2*h));
+                    for (direction r = 0; r < 3; ++r)
+                    {
+                        if (c < 3)
+                        {
+                            d[o].dfdD[3*r + c] = dOut[r];
+                        }
+                        else
+                        {
+                            d[o].dfdF[r][c - 3] = dOut[r];
+                        }
+                    }
+                }
+            }
+
+            // distribute: output 0 is slave face i's row, output 1 + j
+            // master face masters[j]'s row
+            forAll(d, o)
+            {
+                const bool slaveRow = o == 0;
+                const label row = slaveRow ? i : masters[o - 1];
+                const bool slaveCol = inp < 0;
+                const label col = fi;
+                if (slaveRow == slaveCol && row == col)
+                {
+                    faceForceTangent& t =
+                        slaveRow ? slaveOwn[row] : masterOwn[row];
+                    t.dfdD += d[o].dfdD;
+                    for (direction r = 0; r < 3; ++r)
+                    {
+                        t.dfdF[r] += d[o].dfdF[r];
+                    }
+                    continue;
+                }
+                faceCoupling e;
+                e.face = row;
+                e.patch = slaveCol ? slavePatch : masterPatch;
+                e.otherFace = col;
+                e.df = d[o];
+                (slaveRow ? slaveCoupling : masterCoupling).append(e);
+            }
+        }
     }
 }
 
@@ -209,53 +422,76 @@ void Foam::deformableContactFvPatchVectorField::tangent
     List<faceForceTangent>& df
 ) const
 {
-    // [C13] the slave face's exact tangent with the master held (a flat
-    // master under each face: dgap/dx = n, dgT/dx = I - n n), [C6]; the
-    // master face sees sum_s w_sm^2 K_s
     checkPair();
+    List<faceForceTangent> slaveOwn;
+    List<faceForceTangent> masterOwn;
+    DynamicList<faceCoupling> cs;
+    DynamicList<faceCoupling> cm;
+    slaveSide().pairTangent(k.deltaT, slaveOwn, masterOwn, cs, cm);
+    df.transfer(slave_ ? slaveOwn : masterOwn);
+}
+
+
+void Foam::deformableContactFvPatchVectorField::couplingTangent
+(
+    const solidPatchKinematics& k,
+    DynamicList<faceCoupling>& c
+) const
+{
+    checkPair();
+    List<faceForceTangent> slaveOwn;
+    List<faceForceTangent> masterOwn;
+    DynamicList<faceCoupling> cs;
+    DynamicList<faceCoupling> cm;
+    slaveSide().pairTangent(k.deltaT, slaveOwn, masterOwn, cs, cm);
+    c.transfer(slave_ ? cs : cm);
+}
+
+
+void Foam::deformableContactFvPatchVectorField::couplingCandidates
+(
+    const scalar margin,
+    DynamicList<faceCoupling>& c
+) const
+{
+    // [C13] slave face i couples to its candidate masters; master face m
+    // to the slave faces that may overlap it and to their other candidates
+    checkPair();
+    const deformableContactFvPatchVectorField& s = slaveSide();
+    const deformableContactFvPatchVectorField& m = s.partner();
     side sl;
     side ms;
-    List<slaveFace> faces;
-    evaluate(sl, ms, faces, k.deltaT);
+    s.kinematics(sl);
+    m.kinematics(ms);
+    labelListList cand;
+    s.candidates(sl, ms, margin, cand);
 
-    df.setSize(patch().size());
-    df = faceForceTangent();
-
-    forAll(faces, i)
+    c.clear();
+    faceCoupling e;
+    forAll(cand, i)
     {
-        const slaveFace& sf = faces[i];
-        if (!sf.inReach)
+        for (const label mi : cand[i])
         {
-            continue;
-        }
-        const frictionResult& res = sf.result;
-        const vector& n = sf.n;
-        const tensor P(tensor::I - sqr(n));
-        const vector dgNdx(-smoothedPenetrationSlope(-sf.gap)*n);
-        const tensor dtTdx((res.dtTdgT & P) + res.dtTdgN*dgNdx);
-        const tensor K(sf.area*(n*(res.dtNdgN*dgNdx) - dtTdx));
-
-        if (slave_)
-        {
-            // the current area: da = |a|, a = J F^-T . S0; f = c da t
-            const tensor& F = sl.F[i];
-            const tensor FinvT(inv(F).T());
-            const vector a(det(F)*(FinvT & sl.S0[i]));
-            const scalar da = mag(a);
-            const tensor dAreadF(da*FinvT - a*(inv(F) & (a/da)));
-            const vector t(res.tN*n - res.tT);
-            const scalar c = sf.area/max(da, VSMALL);
-            df[i].dfdD = K;
-            for (direction d = 0; d < 3; ++d)
+            if (slave_)
             {
-                df[i].dfdF[d] = (c*t[d])*dAreadF;
+                e.face = i;
+                e.patch = m.patch().index();
+                e.otherFace = mi;
+                c.append(e);
+                continue;
             }
-        }
-        else
-        {
-            forAll(sf.masters, j)
+            e.face = mi;
+            e.patch = s.patch().index();
+            e.otherFace = i;
+            c.append(e);
+            for (const label mj : cand[i])
             {
-                df[sf.masters[j]].dfdD += sqr(sf.weights[j])*K;
+                if (mj != mi)
+                {
+                    e.patch = patch().index();
+                    e.otherFace = mj;
+                    c.append(e);
+                }
             }
         }
     }

@@ -299,6 +299,7 @@ Foam::solidDiscretisation::solidDiscretisation
     patchNormal_(mesh_.boundary().size()),
     uNbr_(mesh_.boundary().size()),
     GNbr_(mesh_.boundary().size()),
+    patternMissed_(false),
     forceScale_(0),
     forceFloor_(0)
 {

@@ -307,6 +307,26 @@ bool Foam::totalLagrangianSolid::updateJacobian(const Eigen::VectorXd& x)
     unpack(x, u);
     discretisation_.setIterate(u);
     discretisation_.jacobian(jacobian_);
+    if (discretisation_.patternMissed())
+    {
+        // [C13] a contact pair moved past the pattern's margin: a new
+        // pattern, a new linear solver for it, the values again
+        linearSolver_.clear();
+        jacobian_.setPattern(discretisation_.jacobianPattern());
+        linearSolver_ = linearSolver::New
+        (
+            mesh_.solutionDict().subDict("solid").subOrEmptyDict
+            (
+                "linearSolver"
+            ),
+            jacobian_
+        );
+        discretisation_.jacobian(jacobian_);
+        if (debug)
+        {
+            Info<< "        Jacobian pattern rebuilt (contact pairs)" << endl;
+        }
+    }
     shiftDiagonal();
     const scalar tAssembly = timer.cpuTimeIncrement();
 
