@@ -17,6 +17,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.environ["TRIBOFOAM_DIR"], "bin", "python"))
 import foamio
+import hertzFit
 
 R1, E1, nu1 = 0.010, 200e9, 0.3
 R2, E2, nu2 = 0.015, 70e9, 0.33
@@ -45,14 +46,7 @@ p = foamio.readPatchField(os.path.join(case, time, "nominalContactPressure"),
                           slave)
 C = foamio.readPatchField(os.path.join(case, "0", "C"), slave)
 pts = sorted((c[0], pi) for c, pi in zip(C, p) if pi > 0)
-xs = [x*x for x, _ in pts[:-1]]
-ys = [pp*pp for _, pp in pts[:-1]]
-n = len(xs)
-mx, my = sum(xs)/n, sum(ys)/n
-B = sum((x - mx)*(y - my) for x, y in zip(xs, ys))/sum((x - mx)**2 for x in xs)
-A = my - B*mx
-p0 = math.sqrt(A)
-a = math.sqrt(-A/B)
+p0, a = hertzFit.fitHertz(pts)
 
 fs = [s[1] + s[4], s[2] + s[5]]
 fm = [m[1] + m[4], m[2] + m[5]]
