@@ -4,150 +4,13 @@ License
 
 Description
     frictionalContact: forces and their tangent handed to the solver, the commit
-    of a converged step, reports and the fields written for ParaView.
+    of a converged step, reports and the entries written for restart.
 
 \*---------------------------------------------------------------------------*/
 
 #include "frictionalContactFvPatchVectorField.H"
 #include "addToRunTimeSelectionTable.H"
 #include "volFields.H"
-#include "OFstream.H"
-
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace Foam
-{
-
-//- Diagnostic field of the mesh: found, or created (zero, written)
-template<class Type>
-static GeometricField<Type, fvPatchField, volMesh>& contactField
-(
-    const objectRegistry& db,
-    const fvMesh& mesh,
-    const word& name,
-    const dimensionSet& dims
-)
-{
-    typedef GeometricField<Type, fvPatchField, volMesh> fieldType;
-    if (!db.foundObject<fieldType>(name))
-    {
-        fieldType* fldPtr = new fieldType
-        (
-            IOobject
-            (
-                name,
-                mesh.time().timeName(),
-                mesh,
-                IOobject::NO_READ,
-                IOobject::AUTO_WRITE
-            ),
-            mesh,
-            dimensioned<Type>(dims, Zero)
-        );
-        fldPtr->store();
-    }
-    return const_cast<fieldType&>(db.lookupObject<fieldType>(name));
-}
-
-} // End namespace Foam
-
-
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-void Foam::frictionalContactFvPatchVectorField::updateFields() const
-{
-    const fvMesh& mesh = patch().boundaryMesh().mesh();
-    const label pi = patch().index();
-
-    auto scalarOut = [&](const word& name, const dimensionSet& dims)
-        -> scalarField&
-    {
-        return contactField<scalar>(db(), mesh, name, dims)
-            .boundaryFieldRef()[pi];
-    };
-    auto vectorOut = [&](const word& name, const dimensionSet& dims)
-        -> vectorField&
-    {
-        return contactField<vector>(db(), mesh, name, dims)
-            .boundaryFieldRef()[pi];
-    };
-
-    // The law's state variables it marks shown
-    for (const frictionStateEntry& e : layout_.entries())
-    {
-        if (!e.show)
-        {
-            continue;
-        }
-        if (e.kind == frictionStateEntry::VECTOR)
-        {
-            vectorOut(e.name, dimensionSet(e.dimensions)) = layout_.vectorValues(state_, e);
-        }
-        else
-        {
-            scalarOut(e.name, dimensionSet(e.dimensions)) = layout_.scalarValues(state_, e);
-        }
-    }
-    scalarOut("contactPressure", dimPressure) = contactPressure_;
-    scalarOut("nominalContactPressure", dimPressure) =
-        nominalContactPressure_;
-    vectorOut("frictionTraction", dimPressure) = frictionTraction_;
-    scalarOut("penetration", dimLength) = penetration_;
-}
-
-
-void Foam::frictionalContactFvPatchVectorField::sampleSensitivity
-(
-    const frictionResult& res
-)
-{
-    // [F21] at the face's own pressure, sliding rate and state
-    const frictionLaw& l = law();
-    if (l.nRateStates() >= 0 && res.state.status == frictionState::SLIP)
-    {
-        frictionLaw::rateStates x(scalar(0));
-        l.rateStatesOf(res.state, x);
-        sensitivity_.add
-        (
-            l.rateSensitivity(res.state.slipRate, x, res.tN),
-            res.state.slipRate, res.tN
-        );
-    }
-}
-
-
-void Foam::frictionalContactFvPatchVectorField::writeIntegrals() const
-{
-    if (!Pstream::master())
-    {
-        return;
-    }
-    const Time& runTime = db().time();
-    const fileName dir(runTime.globalPath()/"postProcessing"/"contact");
-    mkDir(dir);
-    const fileName file(dir/(patch().name() + ".dat"));
-    const bool fresh = !isFile(file);
-    OFstream os
-    (
-        file, IOstream::ASCII, IOstream::currentVersion,
-        IOstream::UNCOMPRESSED, true
-    );
-    if (fresh)
-    {
-        os  << "# time normalForce(x y z) [N] frictionForce(x y z) [N]"
-            << " dissipatedEnergy [J] maxPenetration [m]"
-            << " at(x y z) contactFaces slipFaces" << nl;
-    }
-    os  << runTime.value() << ' '
-        << normalForce_.x() << ' ' << normalForce_.y() << ' '
-        << normalForce_.z() << ' '
-        << frictionForce_.x() << ' ' << frictionForce_.y() << ' '
-        << frictionForce_.z() << ' '
-        << totalDissipation_ << ' ' << maxPenetration_ << ' '
-        << maxPenetrationAt_.x() << ' ' << maxPenetrationAt_.y() << ' '
-        << maxPenetrationAt_.z() << ' ' << nContact_ << ' ' << nSlip_ << nl;
-}
-
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -187,25 +50,12 @@ void Foam::frictionalContactFvPatchVectorField::tangent
     df.setSize(k.F.size());
     df = faceForceTangent();
 
-    const scalarField& V = patch().boundaryMesh().mesh().V();
-    const labelUList& faceCells = patch().faceCells();
-    const scalar e = contactSmoothing_;
-
     forAll(df, facei)
     {
-        const frictionState& old = state_[facei];
+        const frictionState& old = state()[facei];
 
-        const point x(k.Cf0[facei] + k.D[facei]);
         obstaclePoint cp;
-        if
-        (
-            !obstacle_->nearest
-            (
-                x, k.time, searchDistance_,
-                searchRefreshFraction_*V[faceCells[facei]]/mag(k.Sf0[facei]),
-                cp, search_[facei]
-            )
-        )
+        if (!nearestPoint(facei, k, cp))
         {
             continue;
         }
@@ -228,10 +78,7 @@ void Foam::frictionalContactFvPatchVectorField::tangent
         law().update(old, in, res);
 
         // gN = smoothed(-gap) [C2b]; gT = (I - n n).v [C3]
-        const scalar g = -cp.gap;
-        const scalar dSmooth =
-            g >= e ? 1 : (g <= -e ? 0 : (g + e)/(2*e));
-        const vector dgNdx(-dSmooth*cp.dgapdx);
+        const vector dgNdx(-smoothedPenetrationSlope(-cp.gap)*cp.dgapdx);
         const tensor dvdx
         (
             tensor::I
@@ -297,28 +144,24 @@ void Foam::frictionalContactFvPatchVectorField::linearise
     const solidPatchKinematics& k
 )
 {
-    linearised_ = false;
-    const label n = state_.size();
-    heldInput_.setSize(n);
-    heldResult_.setSize(n);
-    heldInReach_.setSize(n);
+    beginHold();
+    frictionInput in;
+    frictionResult res;
     vector normal;
     scalar area;
     scalar gap;
-    forAll(state_, i)
+    forAll(state(), i)
     {
-        heldInReach_[i] = evaluateFace
-        (
-            i, k, heldResult_[i], normal, area, gap, &heldInput_[i]
-        );
+        const bool inReach = evaluateFace(i, k, res, normal, area, gap, &in);
+        holdFace(i, inReach, in, res);
     }
-    linearised_ = true;
+    startHold();
 }
 
 
 void Foam::frictionalContactFvPatchVectorField::release()
 {
-    linearised_ = false;
+    releaseHold();
 }
 
 
@@ -327,103 +170,29 @@ void Foam::frictionalContactFvPatchVectorField::commit
     const solidPatchKinematics& k
 )
 {
-    normalForce_ = Zero;
-    frictionForce_ = Zero;
-    maxPenetration_ = 0;
-    maxPenetrationAt_ = Zero;
-    nContact_ = 0;
-    nSlip_ = 0;
-    sensitivity_ = frictionLaw::sensitivitySummary();
+    beginCommit();
 
     frictionResult res;
     vector n;
     scalar area;
     scalar gap;
-
-    forAll(state_, i)
+    forAll(state(), i)
     {
         if (evaluateFace(i, k, res, n, area, gap))
         {
-            // [C7] dissipation: friction traction times plastic slip
-            dissipation_[i] +=
-                area*(res.tT & (res.state.plasticSlip - state_[i].plasticSlip));
-            state_[i] = res.state;
-            contactPressure_[i] = res.tN;
-            nominalContactPressure_[i] = res.tN*area/mag(k.Sf0[i]);
-            frictionTraction_[i] = -res.tT;
-            penetration_[i] = max(-gap, scalar(0));
-
-            normalForce_ += area*res.tN*n;
-            frictionForce_ -= area*res.tT;
-            if (res.tN > 0)
-            {
-                ++nContact_;
-                if (res.state.status == 2)
-                {
-                    ++nSlip_;
-                    sampleSensitivity(res);
-                }
-                const scalar pen = max(-gap, scalar(0));
-                if (pen > maxPenetration_)
-                {
-                    maxPenetration_ = pen;
-                    maxPenetrationAt_ = k.Cf0[i] + k.D[i];
-                }
-            }
+            commitFace
+            (
+                i, res, n, area, gap, mag(k.Sf0[i]), k.Cf0[i] + k.D[i]
+            );
         }
         else
         {
             // out of reach: an open face, fresh if it comes back
-            frictionState s(law().initialState());
-            s.cumulatedSlip = state_[i].cumulatedSlip;
-            state_[i] = s;
-            contactPressure_[i] = 0;
-            nominalContactPressure_[i] = 0;
-            frictionTraction_[i] = Zero;
-            penetration_[i] = 0;
+            commitOpenFace(i);
         }
     }
 
-    totalDissipation_ = gSum(dissipation_);
-    reduce(normalForce_, sumOp<vector>());
-    reduce(frictionForce_, sumOp<vector>());
-    reduce(nContact_, sumOp<label>());
-    reduce(nSlip_, sumOp<label>());
-    {
-        frictionLaw::sensitivitySummary& s = sensitivity_;
-        const scalar localMin = s.minimum;
-        reduce(s.minimum, minOp<scalar>());
-        if (localMin != s.minimum)
-        {
-            s.vAtMin = -GREAT;
-            s.pAtMin = -GREAT;
-        }
-        reduce(s.vAtMin, maxOp<scalar>());
-        reduce(s.pAtMin, maxOp<scalar>());
-        reduce(s.nSampled, sumOp<label>());
-        reduce(s.nNegative, sumOp<label>());
-        reduce(s.vNegMin, minOp<scalar>());
-        reduce(s.vNegMax, maxOp<scalar>());
-        reduce(s.pNegMin, minOp<scalar>());
-        reduce(s.pNegMax, maxOp<scalar>());
-    }
-    {
-        // location of the largest penetration over all processors
-        scalarList pens(Pstream::nProcs(), scalar(0));
-        List<point> where(Pstream::nProcs(), point::zero);
-        pens[Pstream::myProcNo()] = maxPenetration_;
-        where[Pstream::myProcNo()] = maxPenetrationAt_;
-        Pstream::gatherList(pens);
-        Pstream::gatherList(where);
-        Pstream::scatterList(pens);
-        Pstream::scatterList(where);
-        const label iMax = findMax(pens);
-        maxPenetration_ = pens[iMax];
-        maxPenetrationAt_ = where[iMax];
-    }
-
-    updateFields();
-    writeIntegrals();
+    endCommit();
 }
 
 
@@ -432,33 +201,7 @@ void Foam::frictionalContactFvPatchVectorField::report
     const solidPatchKinematics& k
 ) const
 {
-    Info<< "    contact " << patch().name() << ": " << nContact_
-        << " faces in contact (" << nSlip_ << " slipping), normal force "
-        << normalForce_ << " N, friction force " << frictionForce_
-        << " N, dissipated " << totalDissipation_ << " J, largest"
-        << " penetration " << maxPenetration_ << " m at "
-        << maxPenetrationAt_ << endl;
-
-    // [F21] sliding faces with a negative instantaneous rate sensitivity
-    const frictionLaw::sensitivitySummary& s = sensitivity_;
-    if (s.nNegative)
-    {
-        if (!illPosedWarned_)
-        {
-            law().warnIllPosed
-            (
-                s,
-                "sliding faces of patch " + patch().name() + " at t = "
-              + name(k.time)
-            );
-            illPosedWarned_ = true;
-        }
-        Info<< "    contact " << patch().name() << ": ill-posed sliding on "
-            << s.nNegative << " of " << s.nSampled << " sliding faces"
-            << " (d tT/d ln v < 0 at tN " << s.pNegMin << " to "
-            << s.pNegMax << " Pa, v " << s.vNegMin << " to " << s.vNegMax
-            << " m/s; min " << s.minimum << " Pa)" << endl;
-    }
+    reportFaces(k.time);
 
     // [C2c] obstacle searches since the last report (this step and any
     // cut-back attempts before it)
@@ -480,16 +223,9 @@ void Foam::frictionalContactFvPatchVectorField::write(Ostream& os) const
 {
     fvPatchVectorField::write(os);
     os.writeKeyword("obstacle") << obstacleDict_;
-    os.writeKeyword("frictionLaw") << lawDict_;
-    os.writeEntry("penaltyScale", penaltyScale_);
-    os.writeEntry("tangentialPenaltyScale", tangentialPenaltyScale_);
     os.writeEntry("searchDistance", searchDistance_);
-    os.writeEntry("contactSmoothing", contactSmoothing_);
     os.writeEntry("searchRefreshFraction", searchRefreshFraction_);
-
-    // Face state for restart, as the law declares it
-    layout_.write(os, state_);
-    dissipation_.writeEntry("dissipatedEnergy", os);
+    writeFaces(os);
 
     // [C2c] search records (triangulated obstacles): -1 not searched, -2
     // nothing in reach, else the triangle followed

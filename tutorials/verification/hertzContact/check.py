@@ -25,6 +25,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.environ["TRIBOFOAM_DIR"], "bin", "python"))
 import foamio
+import hertzFit
 
 R, E, nu, t = 0.01, 200e9, 0.3, 0.0005
 Estar = E/(1 - nu*nu)
@@ -45,14 +46,7 @@ p = foamio.readPatchField(os.path.join(case, time, "nominalContactPressure"),
 C = foamio.readPatchField(os.path.join(case, "0", "C"), "contact")
 pts = sorted((c[0], pi) for c, pi in zip(C, p) if pi > 0)
 # fit p^2 = A + B x^2 on the faces in contact except the last one
-xs = [x*x for x, _ in pts[:-1]]
-ys = [pp*pp for _, pp in pts[:-1]]
-n = len(xs)
-mx, my = sum(xs)/n, sum(ys)/n
-B = sum((x - mx)*(y - my) for x, y in zip(xs, ys))/sum((x - mx)**2 for x in xs)
-A = my - B*mx
-p0 = math.sqrt(A)
-a = math.sqrt(-A/B)
+p0, a = hertzFit.fitHertz(pts)
 pMax = max(pp for _, pp in pts)
 
 res = {

@@ -25,6 +25,16 @@ Foam::blockSparseMatrix::blockSparseMatrix
     colCells_(),
     values_()
 {
+    setPattern(columns);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::blockSparseMatrix::setPattern(const labelListList& columns)
+{
+    rowStart_.setSize(columns.size() + 1);
+    rowStart_ = 0;
     std::vector<label> cols;
     DynamicList<label> all(columns.size()*16);
     forAll(columns, r)
@@ -40,11 +50,10 @@ Foam::blockSparseMatrix::blockSparseMatrix
         rowStart_[r + 1] = all.size();
     }
     colCells_.transfer(all);
-    values_.setSize(colCells_.size()*nc_*nc_, 0);
+    values_.setSize(colCells_.size()*nc_*nc_);
+    values_ = 0;
 }
 
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::blockSparseMatrix::zero()
 {

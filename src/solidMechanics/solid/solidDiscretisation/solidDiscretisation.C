@@ -74,7 +74,7 @@ static tensor emptyProjector(const fvMesh& mesh, const bool axisymmetric)
 
 Foam::scalar Foam::solidDiscretisation::computeForceFloor() const
 {
-    const scalar sigma = 1e-6*law_.E();
+    const scalar sigma = 1e-6*laws_.maxE();
     scalarField fMag(mesh_.nCells(), Zero);
     const scalarField& magSf = mesh_.magSf();
     forAll(mesh_.owner(), facei)
@@ -256,13 +256,13 @@ Foam::solidDiscretisation::forceKinematics::forceKinematics
 Foam::solidDiscretisation::solidDiscretisation
 (
     const dictionary& mechanicalProperties,
-    const mechanicalLaw& law,
+    const bodyLaws& laws,
     const volVectorField& D,
     const solidBoundaries& bcs
 )
 :
     mesh_(D.mesh()),
-    law_(law),
+    laws_(laws),
     bcs_(bcs),
     D_(D),
     grad_(mesh_, bcs),
@@ -290,7 +290,7 @@ Foam::solidDiscretisation::solidDiscretisation
     trialInternal_(mesh_.nInternalFaces()),
     trialPatch_(mesh_.boundary().size()),
     inertia_(false),
-    inertiaDensity_(0),
+    inertiaDensity_(mesh_.nCells(), Zero),
     D0_(D.primitiveField()),
     D00_(D.primitiveField()),
     deltaT0_(mesh_.time().deltaTValue()),
@@ -299,6 +299,7 @@ Foam::solidDiscretisation::solidDiscretisation
     patchNormal_(mesh_.boundary().size()),
     uNbr_(mesh_.boundary().size()),
     GNbr_(mesh_.boundary().size()),
+    patternMissed_(false),
     forceScale_(0),
     forceFloor_(0)
 {
@@ -315,7 +316,7 @@ Foam::solidDiscretisation::solidDiscretisation
     // Constructing from a tmp drops the write option: set it here so the
     // plastic history reaches every written time (and a restart)
     const IOobject::writeOption historyWrite =
-        law.plastic() ? IOobject::AUTO_WRITE : IOobject::NO_WRITE;
+        laws.plastic() ? IOobject::AUTO_WRITE : IOobject::NO_WRITE;
     CpInv_.writeOpt() = historyWrite;
     epsilonPf_.writeOpt() = historyWrite;
 
@@ -332,12 +333,15 @@ Foam::solidDiscretisation::solidDiscretisation
             << " is '" << d2dt2 << "'; expected steadyState (quasi-static)"
             << " or Euler (inertia)" << nl << exit(FatalIOError);
     }
-    if (inertia_ && law.rho() <= 0)
+    for (label bodyi = 0; inertia_ && bodyi < laws.size(); ++bodyi)
     {
-        FatalIOErrorInFunction(mechanicalProperties)
-            << "Keyword 'rho' in " << mechanicalProperties.name()
-            << " must be > 0 when d2dt2Schemes is Euler" << nl
-            << exit(FatalIOError);
+        if (laws[bodyi].rho() <= 0)
+        {
+            FatalIOErrorInFunction(mechanicalProperties)
+                << "Keyword 'rho' in " << mechanicalProperties.name()
+                << " (body " << laws.name(bodyi) << ") must be > 0 when"
+                << " d2dt2Schemes is Euler" << nl << exit(FatalIOError);
+        }
     }
 
     // [S13b] mass scaling: quasi-static forming runs with a heavier body so
@@ -353,7 +357,10 @@ Foam::solidDiscretisation::solidDiscretisation
     }
     if (inertia_)
     {
-        inertiaDensity_ = massScaling*law.rho();
+        forAll(inertiaDensity_, celli)
+        {
+            inertiaDensity_[celli] = massScaling*laws.cellLaw(celli).rho();
+        }
     }
     else if (massScaling != 1)
     {
@@ -379,8 +386,17 @@ Foam::solidDiscretisation::solidDiscretisation
 
     Info<< "Total Lagrangian solid: " << mesh_.nGeometricD() << "-D"
         << (bcs.axisymmetric() ? " axisymmetric" : "") << ", "
-        << returnReduce(mesh_.nCells(), sumOp<label>()) << " cells, law "
-        << law.type() << ", E " << law.E() << " Pa, nu " << law.nu()
+        << returnReduce(mesh_.nCells(), sumOp<label>()) << " cells, ";
+    if (laws.size() == 1)
+    {
+        Info<< "law " << laws[0].type() << ", E " << laws[0].E() << " Pa, nu "
+            << laws[0].nu();
+    }
+    else
+    {
+        Info<< laws.size() << " bodies";
+    }
+    Info
         << (inertia_ ? ", with inertia" : ", quasi-static");
     if (inertia_ && massScaling > 1)
     {
@@ -543,7 +559,13 @@ void Foam::solidDiscretisation::cellAverages
         const tensor F(internalFaceF(facei));
         const materialState old(oldState(-1, facei));
         materialState s;
-        const symmTensor sig(mechanicalLaw::cauchy(law_.stress(F, old, s), F));
+        const symmTensor sig
+        (
+            mechanicalLaw::cauchy
+            (
+                laws_.cellLaw(own[facei]).stress(F, old, s), F
+            )
+        );
         const scalar a = magSf[facei];
         for (const label c : {own[facei], nei[facei]})
         {
@@ -587,8 +609,11 @@ Foam::vector Foam::solidDiscretisation::reactionForce(const label patchi) const
     forAll(p, i)
     {
         materialState s;
-        total += law_.stress(boundaryFaceF(patchi, i), oldState(patchi, i), s)
-            & p.Sf()[i];
+        total +=
+            laws_.cellLaw(p.faceCells()[i]).stress
+            (
+                boundaryFaceF(patchi, i), oldState(patchi, i), s
+            ) & p.Sf()[i];
     }
     return total;
 }

@@ -113,7 +113,35 @@ inline tensor fluxBlock
     return K;
 }
 
+//- Face displacement D_f = u_P + d.G_P and F = I + G_P^T: for a column
+//  with dG_P/du_Q, dD_f/du_Q = delta_PQ I + d.dG_P/du_Q
+static tensor dDface(const vector& d, const tensorDerivative& dG, bool self)
+{
+    return dotDerivative(d, dG) + (self ? tensor::I : tensor::zero);
+}
+
+
+//- The block df/du_Q of a face force with tangent t
+static tensor forceBlock
+(
+    const faceForceTangent& t,
+    const tensor& dD,
+    const tensorDerivative& dG
+)
+{
+    tensor K(t.dfdD & dD);
+    for (direction i = 0; i < 3; ++i)
+    {
+        for (direction kk = 0; kk < 3; ++kk)
+        {
+            K[3*i + kk] += t.dfdF[i] && dG[kk].T();
+        }
+    }
+    return K;
+}
+
 } // End namespace Foam
+
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -157,7 +185,7 @@ void Foam::solidDiscretisation::addInternalFaces
         fc.addCompact(numbering.toGlobal(N), e/mag(d));
         fc.addCompact(numbering.toGlobal(P), -e/mag(d));
 
-        law_.stressAndTangent
+        laws_.cellLaw(P).stressAndTangent
         (
             fbar_.apply(F, Jbar), oldState(-1, facei), scratch, dPdF
         );
@@ -295,7 +323,7 @@ void Foam::solidDiscretisation::addBoundaryFaces
         if (kind == solidBoundaries::WEDGE)
         {
             const tensor& T = bcs_.wedgeRotation(patchi);
-            law_.stressAndTangent
+            laws_.cellLaw(P).stressAndTangent
             (
                 T & F & T.T(), oldState(patchi, i), scratch, dPdF
             );
@@ -312,7 +340,7 @@ void Foam::solidDiscretisation::addBoundaryFaces
             continue;
         }
 
-        law_.stressAndTangent
+        laws_.cellLaw(P).stressAndTangent
         (
             fbar_.apply(F, Jbar), oldState(patchi, i), scratch, dPdF
         );
@@ -369,26 +397,6 @@ void Foam::solidDiscretisation::addForcePatch
     List<faceForceTangent> df;
     patch.tangent(k, df);
 
-    // Face displacement D_f = u_P + d.G_P and F = I + G_P^T: for a column
-    // with dG_P/du_Q, dD_f/du_Q = delta_PQ I + d.dG_P/du_Q
-    auto dDface = [](const vector& d, const tensorDerivative& dG, bool self)
-    {
-        return dotDerivative(d, dG) + (self ? tensor::I : tensor::zero);
-    };
-    auto forceBlock = [](const faceForceTangent& t, const tensor& dD,
-        const tensorDerivative& dG)
-    {
-        tensor K(t.dfdD & dD);
-        for (direction i = 0; i < 3; ++i)
-        {
-            for (direction kk = 0; kk < 3; ++kk)
-            {
-                K[3*i + kk] += t.dfdF[i] && dG[kk].T();
-            }
-        }
-        return K;
-    };
-
     forAll(faceCells, i)
     {
         const label P = faceCells[i];
@@ -409,6 +417,47 @@ void Foam::solidDiscretisation::addForcePatch
         }
     }
 
+}
+
+
+void Foam::solidDiscretisation::addForceCouplings
+(
+    const label patchi,
+    blockSparseMatrix& M
+) const
+{
+    // [C13] a face force that depends on the kinematics of a face of
+    // another patch (or another face of its own): the blocks of that face's
+    // cell's gradient stencil in the row of the face's cell
+    const solidForceBoundary& patch = bcs_.forcePatch(patchi);
+    const forceKinematics fk(*this, patchi, mesh_.time().deltaTValue());
+    DynamicList<faceCoupling> c;
+    patch.couplingTangent(fk.k, c);
+
+    const labelUList& rowCells = mesh_.boundary()[patchi].faceCells();
+    auto add = [&](const label r, const label col, const tensor& K)
+    {
+        const label slot = M.find(r, col);
+        if (slot < 0)
+        {
+            patternMissed_ = true;
+            return;
+        }
+        M.addToSlot(slot, -K);
+    };
+    for (const faceCoupling& e : c)
+    {
+        const label P = rowCells[e.face];
+        const label Q = mesh_.boundary()[e.patch].faceCells()[e.otherFace];
+        const vector& d = patchDelta_[e.patch][e.otherFace];
+        const gradientStencil& s = grad_.stencil(Q);
+        add(P, s.cell, forceBlock(e.df, dDface(d, s.self, true), s.self));
+        forAll(s.cells, j)
+        {
+            const tensorDerivative dG(outerIdentity(s.coeffs[j]));
+            add(P, s.cells[j], forceBlock(e.df, dDface(d, dG, false), dG));
+        }
+    }
 }
 
 
@@ -450,6 +499,34 @@ Foam::labelListList Foam::solidDiscretisation::jacobianPattern() const
         }
     }
 
+    // [C13] force patches coupled to faces of other patches (contact
+    // pairs): the current pairs and their neighbours within a face
+    forAll(mesh_.boundary(), patchi)
+    {
+        if
+        (
+            bcs_.kind(patchi) != solidBoundaries::FORCE
+         || !bcs_.forcePatch(patchi).couplesToOtherFaces()
+        )
+        {
+            continue;
+        }
+        const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
+        DynamicList<faceCoupling> c;
+        bcs_.forcePatch(patchi).couplingCandidates(1, c);
+        for (const faceCoupling& e : c)
+        {
+            addStencil
+            (
+                faceCells[e.face],
+                grad_.stencil
+                (
+                    mesh_.boundary()[e.patch].faceCells()[e.otherFace]
+                )
+            );
+        }
+    }
+
     labelListList pattern(cols.size());
     forAll(cols, P)
     {
@@ -462,6 +539,7 @@ Foam::labelListList Foam::solidDiscretisation::jacobianPattern() const
 void Foam::solidDiscretisation::jacobian(blockSparseMatrix& M) const
 {
     M.zero();
+    patternMissed_ = false;
 
     // dJ_P = cof(F_P) : dF_P, cof(F) = J F^-T, once per cell
     tensorField cof(G_.size());
@@ -480,6 +558,10 @@ void Foam::solidDiscretisation::jacobian(blockSparseMatrix& M) const
                 break;
             case solidBoundaries::FORCE:
                 addForcePatch(patchi, M);
+                if (bcs_.forcePatch(patchi).couplesToOtherFaces())
+                {
+                    addForceCouplings(patchi, M);
+                }
                 break;
             default:
                 addBoundaryFaces(patchi, cof, M);
@@ -491,12 +573,16 @@ void Foam::solidDiscretisation::jacobian(blockSparseMatrix& M) const
     if (inertia_)
     {
         const scalar dt = mesh_.time().deltaTValue();
-        const scalar c = 2*inertiaDensity_/(dt*(dt + deltaT0_));
+        const scalar c = 2/(dt*(dt + deltaT0_));
         const scalarField& V = mesh_.V();
         const globalIndex& numbering = grad_.cellNumbering();
         forAll(V, P)
         {
-            M.addBlock(P, numbering.toGlobal(P), (c*V[P])*tensor::I);
+            M.addBlock
+            (
+                P, numbering.toGlobal(P),
+                (c*inertiaDensity_[P]*V[P])*tensor::I
+            );
         }
     }
 }

@@ -26,7 +26,7 @@ void Foam::solidDiscretisation::residual(vectorField& R)
     {
         const vector flux
         (
-            law_.stress
+            laws_.cellLaw(own[facei]).stress
             (
                 internalFaceF(facei), oldState(-1, facei),
                 trialInternal_[facei]
@@ -72,7 +72,7 @@ void Foam::solidDiscretisation::residual(vectorField& R)
         {
             vector flux
             (
-                law_.stress
+                laws_.cellLaw(fc[i]).stress
                 (
                     boundaryFaceF(patchi, i), oldState(patchi, i), trial[i]
                 ) & S[i]
@@ -103,7 +103,7 @@ void Foam::solidDiscretisation::residual(vectorField& R)
                   - (D0_[celli] - D00_[celli])/deltaT0_
                 )
             );
-            const vector inertiaForce(inertiaDensity_*V[celli]*acc);
+            const vector inertiaForce(inertiaDensity_[celli]*V[celli]*acc);
             R[celli] -= inertiaForce;
             fMag[celli] += mag(inertiaForce);
         }

@@ -52,7 +52,7 @@ Foam::solidOutputFields::solidOutputFields(totalLagrangianSolid& solid)
     )
 {
     const fvMesh& mesh = solid.D().mesh();
-    if (solid.law().plastic())
+    if (solid.laws().plastic())
     {
         epsilonPEq_.reset
         (
@@ -161,7 +161,7 @@ void Foam::solidOutputFields::report() const
         // [S13b] reported so a mass-scaled run shows it stays quasi-static
         const vectorField vel((disc.D0() - disc.D00())/disc.deltaT0());
         Info<< "    kinetic energy "
-            << 0.5*disc.inertiaDensity()*gSum(mesh.V()*magSqr(vel))
+            << 0.5*gSum(disc.inertiaDensity()*mesh.V()*magSqr(vel))
             << " J" << endl;
     }
 }

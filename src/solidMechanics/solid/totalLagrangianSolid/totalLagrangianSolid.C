@@ -110,7 +110,7 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
             IOobject::NO_WRITE
         )
     ),
-    law_(mechanicalLaw::New(mechanicalProperties_.subDict("mechanicalLaw"))),
+    laws_(mechanicalProperties_, mesh),
     D_
     (
         IOobject
@@ -125,7 +125,7 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
     ),
     Dprevious_(previousDisplacement(D_)),
     bcs_(D_),
-    discretisation_(mechanicalProperties_, law_(), D_, bcs_),
+    discretisation_(mechanicalProperties_, laws_, D_, bcs_),
     comps_(solvedComponents(mesh)),
     jacobian_
     (
@@ -307,6 +307,26 @@ bool Foam::totalLagrangianSolid::updateJacobian(const Eigen::VectorXd& x)
     unpack(x, u);
     discretisation_.setIterate(u);
     discretisation_.jacobian(jacobian_);
+    if (discretisation_.patternMissed())
+    {
+        // [C13] a contact pair moved past the pattern's margin: a new
+        // pattern, a new linear solver for it, the values again
+        linearSolver_.clear();
+        jacobian_.setPattern(discretisation_.jacobianPattern());
+        linearSolver_ = linearSolver::New
+        (
+            mesh_.solutionDict().subDict("solid").subOrEmptyDict
+            (
+                "linearSolver"
+            ),
+            jacobian_
+        );
+        discretisation_.jacobian(jacobian_);
+        if (debug)
+        {
+            Info<< "        Jacobian pattern rebuilt (contact pairs)" << endl;
+        }
+    }
     shiftDiagonal();
     const scalar tAssembly = timer.cpuTimeIncrement();
 

@@ -1,0 +1,310 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "contactFaces.H"
+#include "volFields.H"
+#include "IOdictionary.H"
+#include "bodyLaws.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::contactFaces::automaticPenalty(const scalar scale) const
+{
+    // [C5] a face penalty as stiff as penaltyScale cells of the solid, of
+    // the body the patch belongs to [C9]
+    const fvPatch& p = contactPatch();
+    const fvMesh& mesh = p.boundaryMesh().mesh();
+    const labelUList& fc = p.faceCells();
+    const scalar Eprime = bodyLaws::planeStrainModulus
+    (
+        mesh.lookupObject<IOdictionary>("mechanicalProperties"), mesh, fc
+    );
+
+    const scalarField& V = mesh.V();
+    const scalarField& magSf = p.magSf();
+    scalar sumDepth = 0;
+    forAll(fc, i)
+    {
+        sumDepth += V[fc[i]]/magSf[i];
+    }
+    const scalar h =
+        returnReduce(sumDepth, sumOp<scalar>())
+       /max(returnReduce(fc.size(), sumOp<label>()), 1);
+
+    return scale*Eprime/max(h, VSMALL);
+}
+
+
+void Foam::contactFaces::createLaw() const
+{
+    dictionary dict(lawDict_);
+    const bool automatic = !dict.found("KN") || !dict.found("KT");
+    if (!dict.found("KN"))
+    {
+        dict.add("KN", automaticPenalty(penaltyScale_));
+    }
+    if (!dict.found("KT"))
+    {
+        dict.add("KT", automaticPenalty(tangentialPenaltyScale_));
+    }
+    law_ = frictionLaw::New(dict);
+    effectiveLawDict_ = dict;
+    layout_ = law_->stateLayout();
+
+    Info<< contactType() << " on patch " << contactPatch().name() << ": law "
+        << lawDict_.get<word>("type") << ", KN " << law_->KN()
+        << " Pa/m, KT " << law_->KT() << " Pa/m"
+        << (automatic ? " (automatic)" : "") << endl;
+}
+
+
+void Foam::contactFaces::readState
+(
+    const dictionary& dict,
+    const frictionLaw& l
+)
+{
+    const label n = contactPatch().size();
+    state_.setSize(n, l.initialState());
+    resizeFaces(n);
+
+    // Restart: the state written by write(), as the law declares it
+    if (layout_.foundIn(dict))
+    {
+        const wordList missing = layout_.read(dict, state_);
+        if (missing.size())
+        {
+            WarningInFunction
+                << "patch " << contactPatch().name() << ": the restart state"
+                << " in " << dict.name() << " has no " << missing
+                << " (written by another law?); law "
+                << lawDict_.get<word>("type")
+                << " starts those as in a fresh contact" << endl;
+        }
+    }
+    if (dict.found("dissipatedEnergy"))
+    {
+        dissipation_ = scalarField("dissipatedEnergy", dict, n);
+    }
+}
+
+
+void Foam::contactFaces::sampleSensitivity(const frictionResult& res)
+{
+    // [F21] at the face's own pressure, sliding rate and state
+    const frictionLaw& l = law();
+    if (l.nRateStates() >= 0 && res.state.status == frictionState::SLIP)
+    {
+        frictionLaw::rateStates x(scalar(0));
+        l.rateStatesOf(res.state, x);
+        sensitivity_.add
+        (
+            l.rateSensitivity(res.state.slipRate, x, res.tN),
+            res.state.slipRate, res.tN
+        );
+    }
+}
+
+
+// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+void Foam::contactFaces::readContactFaces(const dictionary& dict)
+{
+    lawDict_ = dict.subDict("frictionLaw");
+    penaltyScale_ = dict.lookupOrDefault<scalar>("penaltyScale", 100);
+    tangentialPenaltyScale_ =
+        dict.lookupOrDefault<scalar>("tangentialPenaltyScale", 0.1);
+    if (!(penaltyScale_ > 0) || !(tangentialPenaltyScale_ > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keywords 'penaltyScale' and 'tangentialPenaltyScale' in"
+            << " dictionary " << dict.name() << " must be > 0, got "
+            << penaltyScale_ << " and " << tangentialPenaltyScale_ << nl
+            << exit(FatalIOError);
+    }
+
+    // [C2b] width of the smoothed onset of contact: 1e-3 of a cell depth
+    const fvPatch& p = contactPatch();
+    const scalarField& V = p.boundaryMesh().mesh().V();
+    scalar hMax = 0;
+    forAll(p.faceCells(), i)
+    {
+        hMax = max(hMax, V[p.faceCells()[i]]/p.magSf()[i]);
+    }
+    reduce(hMax, maxOp<scalar>());
+    contactSmoothing_ =
+        dict.lookupOrDefault<scalar>("contactSmoothing", 1e-3*hMax);
+    if (contactSmoothing_ < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'contactSmoothing' in dictionary " << dict.name()
+            << " must be >= 0, got " << contactSmoothing_ << nl
+            << exit(FatalIOError);
+    }
+
+    // The law needs the solid's moduli for automatic penalties; utilities
+    // such as decomposePar read D without them and only copy the entries,
+    // for which the law's state layout is enough (penalties do not change
+    // it)
+    if (p.boundaryMesh().mesh().foundObject<IOdictionary>("mechanicalProperties"))
+    {
+        createLaw();
+        readState(dict, law_());
+    }
+    else
+    {
+        dictionary d(lawDict_);
+        d.set("KN", 1.0);
+        d.set("KT", 1.0);
+        const autoPtr<frictionLaw> layoutLaw(frictionLaw::New(d));
+        layout_ = layoutLaw->stateLayout();
+        readState(dict, layoutLaw());
+    }
+}
+
+
+void Foam::contactFaces::copyContactFaces(const contactFaces& ptf)
+{
+    lawDict_ = ptf.lawDict_;
+    effectiveLawDict_ = ptf.effectiveLawDict_;
+    if (ptf.law_.valid())
+    {
+        law_ = frictionLaw::New(effectiveLawDict_);
+    }
+    penaltyScale_ = ptf.penaltyScale_;
+    tangentialPenaltyScale_ = ptf.tangentialPenaltyScale_;
+    contactSmoothing_ = ptf.contactSmoothing_;
+    layout_ = ptf.layout_;
+    state_ = ptf.state_;
+    contactPressure_ = ptf.contactPressure_;
+    nominalContactPressure_ = ptf.nominalContactPressure_;
+    frictionTraction_ = ptf.frictionTraction_;
+    penetration_ = ptf.penetration_;
+    dissipation_ = ptf.dissipation_;
+    normalForce_ = ptf.normalForce_;
+    frictionForce_ = ptf.frictionForce_;
+    totalDissipation_ = ptf.totalDissipation_;
+    maxPenetration_ = ptf.maxPenetration_;
+    maxPenetrationAt_ = ptf.maxPenetrationAt_;
+    nContact_ = ptf.nContact_;
+    nSlip_ = ptf.nSlip_;
+    sensitivity_ = ptf.sensitivity_;
+    illPosedWarned_ = ptf.illPosedWarned_;
+    linearised_ = false;
+}
+
+
+void Foam::contactFaces::resizeFaces(const label n)
+{
+    state_.setSize(n);
+    contactPressure_.setSize(n, 0);
+    nominalContactPressure_.setSize(n, 0);
+    frictionTraction_.setSize(n, Zero);
+    penetration_.setSize(n, 0);
+    dissipation_.setSize(n, 0);
+}
+
+
+void Foam::contactFaces::copyFace
+(
+    const contactFaces& ptf,
+    const label from,
+    const label to
+)
+{
+    if (from < 0 || from >= ptf.state_.size())
+    {
+        return;
+    }
+    state_[to] = ptf.state_[from];
+    contactPressure_[to] = ptf.contactPressure_[from];
+    nominalContactPressure_[to] = ptf.nominalContactPressure_[from];
+    frictionTraction_[to] = ptf.frictionTraction_[from];
+    penetration_[to] = ptf.penetration_[from];
+    dissipation_[to] = ptf.dissipation_[from];
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::contactFaces::contactFaces()
+:
+    penaltyScale_(100),
+    tangentialPenaltyScale_(0.1),
+    contactSmoothing_(0),
+    normalForce_(Zero),
+    frictionForce_(Zero),
+    totalDissipation_(0),
+    maxPenetration_(0),
+    maxPenetrationAt_(Zero),
+    nContact_(0),
+    nSlip_(0),
+    illPosedWarned_(false),
+    linearised_(false)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+const Foam::frictionLaw& Foam::contactFaces::law() const
+{
+    if (!law_.valid())
+    {
+        createLaw();
+    }
+    return law_();
+}
+
+
+void Foam::contactFaces::beginHold()
+{
+    linearised_ = false;
+    const label n = state_.size();
+    heldInput_.setSize(n);
+    heldResult_.setSize(n);
+    heldInReach_.setSize(n);
+    heldInReach_ = false;
+}
+
+
+void Foam::contactFaces::holdFace
+(
+    const label i,
+    const bool inReach,
+    const frictionInput& in,
+    const frictionResult& res
+)
+{
+    heldInReach_[i] = inReach;
+    heldInput_[i] = in;
+    heldResult_[i] = res;
+}
+
+
+void Foam::contactFaces::faceUpdate
+(
+    const label i,
+    const frictionInput& in,
+    frictionResult& res
+) const
+{
+    if (linearised_)
+    {
+        // [S15b] the held face's tangent, not the law
+        const frictionInput& in0 = heldInput_[i];
+        res = heldResult_[i];
+        const scalar dgN = in.gN - in0.gN;
+        const vector dgT(in.gT - in0.gT);
+        res.tN += res.dtNdgN*dgN;
+        res.tT += (res.dtTdgT & dgT) + res.dtTdgN*dgN;
+    }
+    else
+    {
+        law().update(state_[i], in, res);
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,551 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "deformableContactFvPatchVectorField.H"
+#include "addToRunTimeSelectionTable.H"
+#include "wallFvPatch.H"
+#include "wedgePolyPatch.H"
+#include "volFields.H"
+#include "regionSplit.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::deformableContactFvPatchVectorField::copyPair
+(
+    const deformableContactFvPatchVectorField& ptf
+)
+{
+    dict_ = ptf.dict_;
+    partnerName_ = ptf.partnerName_;
+    slave_ = ptf.slave_;
+    searchDistance_ = ptf.searchDistance_;
+    checked_ = false;
+    if (slave_)
+    {
+        copyContactFaces(ptf);
+    }
+}
+
+
+void Foam::deformableContactFvPatchVectorField::setSegments()
+{
+    // [C11] a plane-strain face is a segment in the solved plane: its end
+    // points are the extreme face points along the in-plane tangent
+    const fvMesh& mesh = patch().boundaryMesh().mesh();
+    vector ez(Zero);
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (mesh.geometricD()[d] != 1)
+        {
+            ez[d] = 1;
+        }
+    }
+    const polyPatch& pp = patch().patch();
+    const pointField& pts = mesh.points();
+    Xa_.setSize(pp.size());
+    Xb_.setSize(pp.size());
+    forAll(pp, i)
+    {
+        const point& C = pp.faceCentres()[i];
+        vector tau(ez ^ pp.faceNormals()[i]);
+        tau /= max(mag(tau), VSMALL);
+        scalar lo = GREAT;
+        scalar hi = -GREAT;
+        for (const label pi : pp[i])
+        {
+            const scalar xi = (pts[pi] - C) & tau;
+            lo = min(lo, xi);
+            hi = max(hi, xi);
+        }
+        Xa_[i] = C + lo*tau;
+        Xb_[i] = C + hi*tau;
+    }
+}
+
+
+const Foam::deformableContactFvPatchVectorField&
+Foam::deformableContactFvPatchVectorField::partner() const
+{
+    const volVectorField& D =
+        db().lookupObject<volVectorField>(internalField().name());
+    const label pi = patch().boundaryMesh().findPatchID(partnerName_);
+    return refCast<const deformableContactFvPatchVectorField>
+    (
+        D.boundaryField()[pi]
+    );
+}
+
+
+const Foam::deformableContactFvPatchVectorField&
+Foam::deformableContactFvPatchVectorField::slaveSide() const
+{
+    return slave_ ? *this : partner();
+}
+
+
+void Foam::deformableContactFvPatchVectorField::checkPair() const
+{
+    if (checked_)
+    {
+        return;
+    }
+    checked_ = true;
+
+    const fvMesh& mesh = patch().boundaryMesh().mesh();
+    const volVectorField& D =
+        db().lookupObject<volVectorField>(internalField().name());
+    const label pi = patch().boundaryMesh().findPatchID(partnerName_);
+    const fvPatchVectorField& pf = D.boundaryField()[pi];
+    if (!isA<deformableContactFvPatchVectorField>(pf))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Keyword 'partnerPatch' in dictionary " << dict_.name()
+            << " names patch " << partnerName_ << ", whose condition is '"
+            << pf.type() << "'; expected deformableContact naming "
+            << patch().name() << " as its partnerPatch" << nl
+            << exit(FatalIOError);
+    }
+    const deformableContactFvPatchVectorField& p = partner();
+    if (p.partnerName_ != patch().name())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Keyword 'partnerPatch' in dictionary " << dict_.name()
+            << ": patch " << partnerName_ << " names " << p.partnerName_
+            << " as its partnerPatch, not " << patch().name()
+            << "; the two patches of a pair name each other" << nl
+            << exit(FatalIOError);
+    }
+    if (p.slave_ == slave_)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Patches " << patch().name() << " and " << partnerName_
+            << " (dictionary " << dict_.name() << ") "
+            << (slave_ ? "both have" : "neither has")
+            << " a 'frictionLaw': exactly one side of a deformableContact"
+            << " pair (the slave) carries the law" << nl
+            << exit(FatalIOError);
+    }
+
+    // [C9] the two patches must bound different bodies (connected regions)
+    const regionSplit regions(mesh);
+    labelHashSet own;
+    for (const label c : patch().faceCells())
+    {
+        own.insert(regions[c]);
+    }
+    for (const label c : mesh.boundary()[pi].faceCells())
+    {
+        if (own.found(regions[c]))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Keyword 'partnerPatch' in dictionary " << dict_.name()
+                << ": patches " << patch().name() << " and " << partnerName_
+                << " bound the same body (connected cells, e.g. cell " << c
+                << " at " << mesh.C()[c] << "); contact pairs two bodies"
+                << nl << exit(FatalIOError);
+        }
+    }
+
+    // Bodies that overlap at the start (a mesh or a restart displacement
+    // in which a slave face lies behind the master surface by more than 1 %
+    // of its cell depth: no penalty pushes them apart gently)
+    if (mesh.time().timeIndex() <= mesh.time().startTimeIndex() + 1)
+    {
+        const deformableContactFvPatchVectorField& s = slaveSide();
+        side sl;
+        side ms;
+        s.committedKinematics(sl);
+        s.partner().committedKinematics(ms);
+        List<slaveFace> faces;
+        s.evaluatePair(sl, ms, mesh.time().deltaTValue(), faces);
+        const scalarField& V = mesh.V();
+        const labelUList& fc = s.patch().faceCells();
+        forAll(faces, i)
+        {
+            const scalar depth = V[fc[i]]/mag(sl.S0[i]);
+            if (faces[i].inReach && faces[i].gap < -0.01*depth)
+            {
+                FatalIOErrorInFunction(s.dict_)
+                    << "Patches " << s.patch().name() << " and "
+                    << s.partnerName_ << " (keyword 'partnerPatch' in "
+                    << "dictionary " << s.dict_.name() << ") overlap at the"
+                    << " start: face " << i << " of " << s.patch().name()
+                    << " at " << sl.X[i] + sl.D[i] << " lies "
+                    << -faces[i].gap << " m behind the other body's surface"
+                    << " (its cell depth is " << depth << " m); move the"
+                    << " bodies apart in the mesh" << nl
+                    << exit(FatalIOError);
+            }
+        }
+    }
+}
+
+
+void Foam::deformableContactFvPatchVectorField::committedKinematics
+(
+    side& s
+) const
+{
+    s.X = patch().Cf();
+    s.S0 = patch().Sf();
+    s.Dold = *this;
+    s.D = s.Dold;
+    s.F = tensorField(s.X.size(), tensor::I);
+    s.Xa = Xa_;
+    s.Xb = Xb_;
+    s.a = Xa_ + s.D;
+    s.b = Xb_ + s.D;
+    s.area = mag(s.S0);
+    s.n = s.S0/s.area;
+}
+
+
+void Foam::deformableContactFvPatchVectorField::kinematics(side& s) const
+{
+    // The solver's iterate (solidDiscretisation's working fields): face
+    // value extrapolated from the cell with its gradient, F = I + G^T [C2]
+    const volVectorField& u = db().lookupObject<volVectorField>("Dwork");
+    const volTensorField& G = db().lookupObject<volTensorField>("gradDwork");
+    const labelUList& fc = patch().faceCells();
+    const vectorField& C = patch().boundaryMesh().mesh().C();
+
+    s.X = patch().Cf();
+    s.S0 = patch().Sf();
+    s.Dold = *this;
+    const label n = fc.size();
+    s.D.setSize(n);
+    s.F.setSize(n);
+    s.a.setSize(n);
+    s.b.setSize(n);
+    s.area.setSize(n);
+    s.n.setSize(n);
+    s.Xa = Xa_;
+    s.Xb = Xb_;
+    forAll(fc, i)
+    {
+        const tensor& Gi = G[fc[i]];
+        s.D[i] = u[fc[i]] + ((s.X[i] - C[fc[i]]) & Gi);
+        s.F[i] = tensor::I + Gi.T();
+        faceGeometry(s, i);
+    }
+}
+
+
+void Foam::deformableContactFvPatchVectorField::faceGeometry
+(
+    side& s,
+    const label i
+)
+{
+    const point x(s.X[i] + s.D[i]);
+    s.a[i] = x + (s.F[i] & (s.Xa[i] - s.X[i]));
+    s.b[i] = x + (s.F[i] & (s.Xb[i] - s.X[i]));
+    // [C4] Nanson
+    const vector A(det(s.F[i])*(inv(s.F[i]).T() & s.S0[i]));
+    s.area[i] = mag(A);
+    s.n[i] = A/max(s.area[i], VSMALL);
+}
+
+
+void Foam::deformableContactFvPatchVectorField::evaluate
+(
+    side& sl,
+    side& ms,
+    List<slaveFace>& faces,
+    const scalar deltaT
+) const
+{
+    const deformableContactFvPatchVectorField& s = slaveSide();
+    const deformableContactFvPatchVectorField& m = s.partner();
+    s.kinematics(sl);
+    m.kinematics(ms);
+    s.evaluatePair(sl, ms, deltaT, faces);
+}
+
+
+void Foam::deformableContactFvPatchVectorField::pairForces
+(
+    const List<slaveFace>& faces,
+    const label nMaster,
+    vectorField& fSlave,
+    vectorField& fMaster
+)
+{
+    // [C1], [C10]: f_s = c da (tN n - tT); f_m = -sum_s w_sm f_s
+    fSlave.setSize(faces.size());
+    fSlave = Zero;
+    fMaster.setSize(nMaster);
+    fMaster = Zero;
+    forAll(faces, i)
+    {
+        const slaveFace& sf = faces[i];
+        if (!sf.inReach)
+        {
+            continue;
+        }
+        fSlave[i] = sf.area*(sf.result.tN*sf.n - sf.result.tT);
+        forAll(sf.masters, j)
+        {
+            fMaster[sf.masters[j]] -= sf.weights[j]*fSlave[i];
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::deformableContactFvPatchVectorField::deformableContactFvPatchVectorField
+(
+    const fvPatch& p,
+    const DimensionedField<vector, volMesh>& iF
+)
+:
+    calculatedFvPatchVectorField(p, iF),
+    slave_(false),
+    searchDistance_(GREAT),
+    checked_(false),
+    committedTimeIndex_(-1)
+{
+    setSegments();
+}
+
+
+Foam::deformableContactFvPatchVectorField::deformableContactFvPatchVectorField
+(
+    const fvPatch& p,
+    const DimensionedField<vector, volMesh>& iF,
+    const dictionary& dict
+)
+:
+    calculatedFvPatchVectorField(p, iF, dict, false),
+    dict_(dict),
+    partnerName_(dict.get<word>("partnerPatch")),
+    slave_(dict.found("frictionLaw")),
+    searchDistance_(-1),
+    checked_(false),
+    committedTimeIndex_(-1)
+{
+    const fvMesh& mesh = p.boundaryMesh().mesh();
+    if (!isA<wallFvPatch>(p))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Patch " << p.name() << " (dictionary " << dict.name()
+            << "): type deformableContact needs a patch of type 'wall' in"
+            << " constant/polyMesh/boundary; it is of type '" << p.type()
+            << "'" << nl << exit(FatalIOError);
+    }
+    const label partneri = p.boundaryMesh().findPatchID(partnerName_);
+    if (partneri < 0 || partneri == p.index())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'partnerPatch' in dictionary " << dict.name()
+            << " names '" << partnerName_ << "', "
+            << (partneri < 0 ? "which is no patch of the mesh" : "the patch itself")
+            << "; expected the facing patch of the other body, one of "
+            << p.boundaryMesh().mesh().boundaryMesh().names() << nl
+            << exit(FatalIOError);
+    }
+    if (mesh.nGeometricD() != 2)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Patch " << p.name() << " (dictionary " << dict.name()
+            << "): deformableContact is built for plane-strain (2-D)"
+            << " meshes only so far (doc/theory.md [C11]); this mesh is "
+            << mesh.nGeometricD() << "-D" << nl << exit(FatalIOError);
+    }
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        if (isA<wedgePolyPatch>(pp))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Patch " << p.name() << " (dictionary " << dict.name()
+                << "): deformableContact is built for plane strain only;"
+                << " the mesh is axisymmetric (wedge patch " << pp.name()
+                << ")" << nl << exit(FatalIOError);
+        }
+    }
+    if (Pstream::parRun())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Patch " << p.name() << " (dictionary " << dict.name()
+            << "): deformableContact runs serial only so far" << nl
+            << exit(FatalIOError);
+    }
+
+    // Default search distance: two cell depths
+    const scalarField& V = mesh.V();
+    scalar hMax = 0;
+    forAll(p.faceCells(), i)
+    {
+        hMax = max(hMax, V[p.faceCells()[i]]/p.magSf()[i]);
+    }
+    searchDistance_ =
+        dict.lookupOrDefault<scalar>("searchDistance", 2*max(hMax, SMALL));
+    if (!(searchDistance_ > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'searchDistance' in dictionary " << dict.name()
+            << " must be > 0, got " << searchDistance_ << nl
+            << exit(FatalIOError);
+    }
+
+    setSegments();
+    if (slave_)
+    {
+        readContactFaces(dict);
+    }
+
+    if (dict.found("value"))
+    {
+        fvPatchVectorField::operator=(vectorField("value", dict, p.size()));
+    }
+    else
+    {
+        fvPatchVectorField::operator=(patchInternalField());
+    }
+}
+
+
+Foam::deformableContactFvPatchVectorField::deformableContactFvPatchVectorField
+(
+    const deformableContactFvPatchVectorField& ptf,
+    const fvPatch& p,
+    const DimensionedField<vector, volMesh>& iF,
+    const fvPatchFieldMapper& mapper
+)
+:
+    calculatedFvPatchVectorField(ptf, p, iF, mapper),
+    dict_(ptf.dict_),
+    partnerName_(ptf.partnerName_),
+    slave_(ptf.slave_),
+    searchDistance_(ptf.searchDistance_),
+    checked_(false),
+    committedTimeIndex_(-1)
+{
+    setSegments();
+    if (slave_)
+    {
+        copyContactFaces(ptf);
+        resizeFaces(mapper.size());
+        if
+        (
+            mapper.direct()
+         && notNull(mapper.directAddressing())
+         && mapper.directAddressing().size()
+        )
+        {
+            const labelUList& addr = mapper.directAddressing();
+            forAll(addr, i)
+            {
+                copyFace(ptf, addr[i], i);
+            }
+        }
+    }
+}
+
+
+Foam::deformableContactFvPatchVectorField::deformableContactFvPatchVectorField
+(
+    const deformableContactFvPatchVectorField& ptf
+)
+:
+    calculatedFvPatchVectorField(ptf),
+    solidForceBoundary(),
+    contactFaces(),
+    Xa_(ptf.Xa_),
+    Xb_(ptf.Xb_),
+    committedTimeIndex_(-1)
+{
+    copyPair(ptf);
+}
+
+
+Foam::deformableContactFvPatchVectorField::deformableContactFvPatchVectorField
+(
+    const deformableContactFvPatchVectorField& ptf,
+    const DimensionedField<vector, volMesh>& iF
+)
+:
+    calculatedFvPatchVectorField(ptf, iF),
+    solidForceBoundary(),
+    contactFaces(),
+    Xa_(ptf.Xa_),
+    Xb_(ptf.Xb_),
+    committedTimeIndex_(-1)
+{
+    copyPair(ptf);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::deformableContactFvPatchVectorField::autoMap
+(
+    const fvPatchFieldMapper& m
+)
+{
+    calculatedFvPatchVectorField::autoMap(m);
+    setSegments();
+    if (slave_)
+    {
+        const deformableContactFvPatchVectorField old(*this);
+        resizeFaces(m.size());
+        if (m.direct() && notNull(m.directAddressing()))
+        {
+            const labelUList& addr = m.directAddressing();
+            forAll(addr, i)
+            {
+                copyFace(old, addr[i], i);
+            }
+        }
+    }
+}
+
+
+void Foam::deformableContactFvPatchVectorField::rmap
+(
+    const fvPatchVectorField& ptf,
+    const labelList& addr
+)
+{
+    calculatedFvPatchVectorField::rmap(ptf, addr);
+    if (slave_)
+    {
+        const deformableContactFvPatchVectorField& dptf =
+            refCast<const deformableContactFvPatchVectorField>(ptf);
+        forAll(addr, i)
+        {
+            copyFace(dptf, i, addr[i]);
+        }
+    }
+}
+
+
+void Foam::deformableContactFvPatchVectorField::write(Ostream& os) const
+{
+    fvPatchVectorField::write(os);
+    os.writeEntry("partnerPatch", partnerName_);
+    os.writeEntry("searchDistance", searchDistance_);
+    if (slave_)
+    {
+        writeFaces(os);
+    }
+    writeEntry("value", os);
+}
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    makePatchTypeField
+    (
+        fvPatchVectorField,
+        deformableContactFvPatchVectorField
+    );
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,600 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+
+Description
+    deformableContact: the slave faces against the master surface
+    ([C10]-[C13] in doc/theory.md), the forces of both sides, their
+    diagonal tangent, the held linearisation and the commit.
+
+\*---------------------------------------------------------------------------*/
+
+#include "deformableContactFvPatchVectorField.H"
+#include "volFields.H"
+#include <algorithm>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+//- One overlap of a slave face with a master face [C11]
+struct faceOverlap
+{
+    label master;
+    scalar length;      // overlap length l_sm, in the master's measure
+    scalar projected;   // length of the slave segment's projection
+    scalar gap;         // (x_s - x_m) . n_m at the overlap's midpoint
+};
+
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::deformableContactFvPatchVectorField::candidates
+(
+    const side& sl,
+    const side& ms,
+    const scalar margin,
+    labelListList& cand
+) const
+{
+    // Candidates by a sweep along the direction in which the master
+    // surface extends most: the master faces sorted by the lower end of
+    // their interval (widened by the search distance); a slave face's
+    // candidates start within one interval length before its own
+    // [C11]: O(n log n)
+    const label nM = ms.X.size();
+    cand.setSize(sl.X.size());
+    if (nM == 0)
+    {
+        cand = labelList();
+        return;
+    }
+    boundBox bb(ms.a, false);
+    bb.add(ms.b);
+    const vector span(bb.span());
+    const direction ax =
+        span.x() >= span.y() && span.x() >= span.z() ? 0
+      : (span.y() >= span.z() ? 1 : 2);
+    scalar longest = 0;
+    forAll(ms.a, m)
+    {
+        longest = max(longest, mag(ms.b[m] - ms.a[m]));
+    }
+    const scalar widen = searchDistance_ + margin*longest;
+    scalarField lo(nM);
+    scalarField hi(nM);
+    scalar maxLength = 0;
+    forAll(lo, m)
+    {
+        lo[m] = min(ms.a[m][ax], ms.b[m][ax]) - widen;
+        hi[m] = max(ms.a[m][ax], ms.b[m][ax]) + widen;
+        maxLength = max(maxLength, hi[m] - lo[m]);
+    }
+    labelList order(identity(nM));
+    std::sort
+    (
+        order.begin(), order.end(),
+        [&](const label i, const label j) { return lo[i] < lo[j]; }
+    );
+    scalarList sortedLo(nM);
+    forAll(order, k)
+    {
+        sortedLo[k] = lo[order[k]];
+    }
+
+    DynamicList<label> found(8);
+    forAll(cand, i)
+    {
+        const scalar sLo = min(sl.a[i][ax], sl.b[i][ax]);
+        const scalar sHi = max(sl.a[i][ax], sl.b[i][ax]);
+        found.clear();
+        label k = label
+        (
+            std::lower_bound
+            (
+                sortedLo.begin(), sortedLo.end(), sLo - maxLength
+            ) - sortedLo.begin()
+        );
+        for (; k < nM && sortedLo[k] <= sHi; ++k)
+        {
+            const label m = order[k];
+            // facing surfaces only
+            if (hi[m] >= sLo && (sl.n[i] & ms.n[m]) < 0)
+            {
+                found.append(m);
+            }
+        }
+        cand[i] = found;
+    }
+}
+
+
+void Foam::deformableContactFvPatchVectorField::evaluateFace
+(
+    const label i,
+    const side& sl,
+    const side& ms,
+    const labelList& cand,
+    const scalar deltaT,
+    slaveFace& sf,
+    const slaveFace* held
+) const
+{
+    sf = slaveFace();
+    if (heldOutOfReach(i))
+    {
+        return;
+    }
+    const point& as = sl.a[i];
+    const point& bs = sl.b[i];
+
+    DynamicList<faceOverlap> overlaps(8);
+    for (const label m : cand)
+    {
+        const vector& nm = ms.n[m];
+        if ((sl.n[i] & nm) >= 0)
+        {
+            continue;
+        }
+        const vector e(ms.b[m] - ms.a[m]);
+        const scalar Lm = mag(e);
+        if (Lm < VSMALL)
+        {
+            continue;
+        }
+        const vector tau(e/Lm);
+        const scalar xa = (as - ms.a[m]) & tau;
+        const scalar xb = (bs - ms.a[m]) & tau;
+        const scalar l0 = max(min(xa, xb), scalar(0));
+        const scalar l1 = min(max(xa, xb), Lm);
+        if (l1 <= l0)
+        {
+            continue;
+        }
+        // the gap is linear over the overlap: its midpoint value is its
+        // mean
+        const scalar xc = 0.5*(l0 + l1);
+        const scalar lambda =
+            mag(xb - xa) > VSMALL ? (xc - xa)/(xb - xa) : 0.5;
+        const point xs(as + lambda*(bs - as));
+        const point xm(ms.a[m] + xc*tau);
+        const scalar g = (xs - xm) & nm;
+        if (mag(g) > searchDistance_)
+        {
+            continue;
+        }
+        overlaps.append({m, l1 - l0, mag(xb - xa), g});
+    }
+
+    scalar total = 0;
+    for (const faceOverlap& o : overlaps)
+    {
+        total += o.length;
+    }
+    if (total <= 0)
+    {
+        return;
+    }
+
+    // [C10] weighted gap, normal, coverage; [C12] slip
+    sf.inReach = true;
+    sf.masters.setSize(overlaps.size());
+    sf.weights.setSize(overlaps.size());
+    sf.gap = 0;
+    vector n(Zero);
+    scalar projected = 0;
+    vector dsMaster(Zero);
+    forAll(overlaps, j)
+    {
+        const faceOverlap& o = overlaps[j];
+        const scalar w = o.length/total;
+        sf.masters[j] = o.master;
+        sf.weights[j] = w;
+        sf.gap += w*o.gap;
+        n += w*ms.n[o.master];
+        projected += w*o.projected;
+        dsMaster += w*(ms.D[o.master] - ms.Dold[o.master]);
+    }
+    sf.n = n/max(mag(n), VSMALL);
+    sf.area = min(total/max(projected, VSMALL), scalar(1))*sl.area[i];
+
+    const vector ds((sl.D[i] - sl.Dold[i]) - dsMaster);
+    frictionInput& in = sf.input;
+    in.gN = smoothedPenetration(-sf.gap);
+    in.gT = (tensor::I - sqr(sf.n)) & (state()[i].totalSlip + ds);
+    in.n = sf.n;
+    in.dt = deltaT;
+    if (held)
+    {
+        // the law's consistent tangent at the held result [F7]
+        const frictionInput& in0 = held->input;
+        sf.result = held->result;
+        const scalar dgN = in.gN - in0.gN;
+        const vector dgT(in.gT - in0.gT);
+        sf.result.tN += sf.result.dtNdgN*dgN;
+        sf.result.tT += (sf.result.dtTdgT & dgT) + sf.result.dtTdgN*dgN;
+    }
+    else
+    {
+        faceUpdate(i, in, sf.result);
+    }
+}
+
+
+void Foam::deformableContactFvPatchVectorField::evaluatePair
+(
+    const side& sl,
+    const side& ms,
+    const scalar deltaT,
+    List<slaveFace>& faces
+) const
+{
+    labelListList cand;
+    candidates(sl, ms, 0, cand);
+    faces.setSize(sl.X.size());
+    forAll(faces, i)
+    {
+        evaluateFace(i, sl, ms, cand[i], deltaT, faces[i]);
+    }
+}
+
+
+void Foam::deformableContactFvPatchVectorField::pairTangent
+(
+    const scalar deltaT,
+    List<faceForceTangent>& slaveOwn,
+    List<faceForceTangent>& masterOwn,
+    DynamicList<faceCoupling>& slaveCoupling,
+    DynamicList<faceCoupling>& masterCoupling
+) const
+{
+    // [C13] for every slave face in contact: the derivatives of its force
+    // f_s and of its share -w_sm f_s of each master face's force with
+    // respect to the kinematics (D, F) of the faces it involves (itself and
+    // the masters it overlaps), by central differences of the face's
+    // geometry with the law linear about its result (the law's consistent
+    // tangent, [F7]): face-local, so a handful of face evaluations per
+    // face and derivative
+    const deformableContactFvPatchVectorField& m = partner();
+    const label slavePatch = patch().index();
+    const label masterPatch = m.patch().index();
+
+    side sl;
+    side ms;
+    kinematics(sl);
+    m.kinematics(ms);
+    labelListList cand;
+    candidates(sl, ms, 0, cand);
+
+    slaveOwn.setSize(sl.X.size());
+    slaveOwn = faceForceTangent();
+    masterOwn.setSize(ms.X.size());
+    masterOwn = faceForceTangent();
+    slaveCoupling.clear();
+    masterCoupling.clear();
+
+    // the outputs of slave face i: f_s and -w_sm f_s for the base masters
+    auto outputs = [](const slaveFace& sf, const labelList& masters,
+        List<vector>& out)
+    {
+        out.setSize(1 + masters.size());
+        out = Zero;
+        if (!sf.inReach)
+        {
+            return;
+        }
+        const vector f(sf.area*(sf.result.tN*sf.n - sf.result.tT));
+        out[0] = f;
+        forAll(masters, j)
+        {
+            const label k = sf.masters.find(masters[j]);
+            if (k >= 0)
+            {
+                out[1 + j] = -sf.weights[k]*f;
+            }
+        }
+    };
+
+    List<vector> outP;
+    List<vector> outM;
+    List<faceForceTangent> d;
+    forAll(sl.X, i)
+    {
+        slaveFace base;
+        evaluateFace(i, sl, ms, cand[i], deltaT, base);
+        if (!base.inReach)
+        {
+            continue;
+        }
+        const labelList masters(base.masters);
+        const label nOut = 1 + masters.size();
+
+        // inputs: the slave face (-1) and its masters
+        for (label inp = -1; inp < masters.size(); ++inp)
+        {
+            side& s = inp < 0 ? sl : ms;
+            const label fi = inp < 0 ? i : masters[inp];
+            const scalar hD = 1e-6*mag(s.b[fi] - s.a[fi]);
+            const scalar hF = 1e-6;
+            const vector D0(s.D[fi]);
+            const tensor F0(s.F[fi]);
+
+            d.setSize(nOut);
+            d = faceForceTangent();
+            for (direction c = 0; c < 12; ++c)
+            {
+                const scalar h = c < 3 ? hD : hF;
+                for (const scalar sign : {1.0, -1.0})
+                {
+                    if (c < 3)
+                    {
+                        s.D[fi] = D0;
+                        s.D[fi][c] += sign*h;
+                    }
+                    else
+                    {
+                        s.F[fi] = F0;
+                        s.F[fi][c - 3] += sign*h;
+                    }
+                    faceGeometry(s, fi);
+                    slaveFace sf;
+                    evaluateFace(i, sl, ms, cand[i], deltaT, sf, &base);
+                    outputs(sf, masters, sign > 0 ? outP : outM);
+                }
+                s.D[fi] = D0;
+                s.F[fi] = F0;
+                faceGeometry(s, fi);
+
+                forAll(d, o)
+                {
+                    const vector dOut((outP[o] - outM[o])/(2*h));
+                    for (direction r = 0; r < 3; ++r)
+                    {
+                        if (c < 3)
+                        {
+                            d[o].dfdD[3*r + c] = dOut[r];
+                        }
+                        else
+                        {
+                            d[o].dfdF[r][c - 3] = dOut[r];
+                        }
+                    }
+                }
+            }
+
+            // distribute: output 0 is slave face i's row, output 1 + j
+            // master face masters[j]'s row
+            forAll(d, o)
+            {
+                const bool slaveRow = o == 0;
+                const label row = slaveRow ? i : masters[o - 1];
+                const bool slaveCol = inp < 0;
+                const label col = fi;
+                if (slaveRow == slaveCol && row == col)
+                {
+                    faceForceTangent& t =
+                        slaveRow ? slaveOwn[row] : masterOwn[row];
+                    t.dfdD += d[o].dfdD;
+                    for (direction r = 0; r < 3; ++r)
+                    {
+                        t.dfdF[r] += d[o].dfdF[r];
+                    }
+                    continue;
+                }
+                faceCoupling e;
+                e.face = row;
+                e.patch = slaveCol ? slavePatch : masterPatch;
+                e.otherFace = col;
+                e.df = d[o];
+                (slaveRow ? slaveCoupling : masterCoupling).append(e);
+            }
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::deformableContactFvPatchVectorField::force
+(
+    const solidPatchKinematics& k,
+    vectorField& f
+) const
+{
+    checkPair();
+    side sl;
+    side ms;
+    List<slaveFace> faces;
+    evaluate(sl, ms, faces, k.deltaT);
+    vectorField fs;
+    vectorField fm;
+    pairForces(faces, ms.X.size(), fs, fm);
+    f = slave_ ? fs : fm;
+}
+
+
+void Foam::deformableContactFvPatchVectorField::tangent
+(
+    const solidPatchKinematics& k,
+    List<faceForceTangent>& df
+) const
+{
+    checkPair();
+    List<faceForceTangent> slaveOwn;
+    List<faceForceTangent> masterOwn;
+    DynamicList<faceCoupling> cs;
+    DynamicList<faceCoupling> cm;
+    slaveSide().pairTangent(k.deltaT, slaveOwn, masterOwn, cs, cm);
+    df.transfer(slave_ ? slaveOwn : masterOwn);
+}
+
+
+void Foam::deformableContactFvPatchVectorField::couplingTangent
+(
+    const solidPatchKinematics& k,
+    DynamicList<faceCoupling>& c
+) const
+{
+    checkPair();
+    List<faceForceTangent> slaveOwn;
+    List<faceForceTangent> masterOwn;
+    DynamicList<faceCoupling> cs;
+    DynamicList<faceCoupling> cm;
+    slaveSide().pairTangent(k.deltaT, slaveOwn, masterOwn, cs, cm);
+    c.transfer(slave_ ? cs : cm);
+}
+
+
+void Foam::deformableContactFvPatchVectorField::couplingCandidates
+(
+    const scalar margin,
+    DynamicList<faceCoupling>& c
+) const
+{
+    // [C13] slave face i couples to its candidate masters; master face m
+    // to the slave faces that may overlap it and to their other candidates
+    checkPair();
+    const deformableContactFvPatchVectorField& s = slaveSide();
+    const deformableContactFvPatchVectorField& m = s.partner();
+    side sl;
+    side ms;
+    s.kinematics(sl);
+    m.kinematics(ms);
+    labelListList cand;
+    s.candidates(sl, ms, margin, cand);
+
+    c.clear();
+    faceCoupling e;
+    forAll(cand, i)
+    {
+        for (const label mi : cand[i])
+        {
+            if (slave_)
+            {
+                e.face = i;
+                e.patch = m.patch().index();
+                e.otherFace = mi;
+                c.append(e);
+                continue;
+            }
+            e.face = mi;
+            e.patch = s.patch().index();
+            e.otherFace = i;
+            c.append(e);
+            for (const label mj : cand[i])
+            {
+                if (mj != mi)
+                {
+                    e.patch = patch().index();
+                    e.otherFace = mj;
+                    c.append(e);
+                }
+            }
+        }
+    }
+}
+
+
+void Foam::deformableContactFvPatchVectorField::linearise
+(
+    const solidPatchKinematics& k
+)
+{
+    if (!slave_)
+    {
+        return;
+    }
+    checkPair();
+    beginHold();
+    side sl;
+    side ms;
+    List<slaveFace> faces;
+    evaluate(sl, ms, faces, k.deltaT);
+    forAll(faces, i)
+    {
+        holdFace(i, faces[i].inReach, faces[i].input, faces[i].result);
+    }
+    startHold();
+}
+
+
+void Foam::deformableContactFvPatchVectorField::release()
+{
+    if (slave_)
+    {
+        releaseHold();
+    }
+}
+
+
+void Foam::deformableContactFvPatchVectorField::commit
+(
+    const solidPatchKinematics& k
+)
+{
+    checkPair();
+    const label timeIndex = db().time().timeIndex();
+    side sl;
+    side ms;
+    List<slaveFace> faces;
+
+    if (slave_)
+    {
+        evaluate(sl, ms, faces, k.deltaT);
+        vectorField fs;
+        pairForces(faces, ms.X.size(), fs, committedMasterForce_);
+        committedTimeIndex_ = timeIndex;
+
+        beginCommit();
+        forAll(faces, i)
+        {
+            const slaveFace& sf = faces[i];
+            if (sf.inReach)
+            {
+                commitFace
+                (
+                    i, sf.result, sf.n, sf.area, sf.gap, mag(sl.S0[i]),
+                    sl.X[i] + sl.D[i]
+                );
+            }
+            else
+            {
+                commitOpenFace(i);
+            }
+        }
+        endCommit();
+        return;
+    }
+
+    // The master: the forces of the step as the slave had them before its
+    // state moved on (if it committed first)
+    const deformableContactFvPatchVectorField& s = partner();
+    vectorField fm;
+    if (s.committedTimeIndex_ == timeIndex)
+    {
+        fm = s.committedMasterForce_;
+        kinematics(ms);
+    }
+    else
+    {
+        evaluate(sl, ms, faces, k.deltaT);
+        vectorField fs;
+        pairForces(faces, ms.X.size(), fs, fm);
+    }
+    commitReaction(fm, ms.n, ms.area, mag(ms.S0));
+}
+
+
+void Foam::deformableContactFvPatchVectorField::report
+(
+    const solidPatchKinematics& k
+) const
+{
+    reportFaces(k.time);
+}
+
+
+// ************************************************************************* //
