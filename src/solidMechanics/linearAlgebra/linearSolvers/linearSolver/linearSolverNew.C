@@ -32,6 +32,10 @@ Foam::autoPtr<Foam::linearSolver> Foam::linearSolver::New
     const blockSparseMatrix& matrix
 )
 {
+    // The dictionary the solver is built from: the user's, or with the
+    // default's choice of preconditioner added
+    dictionary solverDict(dict);
+
     word solverType;
     if (dict.readIfPresent("type", solverType))
     {
@@ -40,19 +44,27 @@ Foam::autoPtr<Foam::linearSolver> Foam::linearSolver::New
     }
     else
     {
-        // A sparse direct factorisation wins on small 2-D problems; its
-        // fill grows faster than the cell count, so 3-D, parallel and
-        // large runs default to an iterative solver with multigrid
+        // A sparse direct factorisation wins on small 2-D problems (serial:
+        // Eigen's LU, parallel: PETSc's MUMPS, so that a parallel run takes
+        // the serial run's Newton iterations); its fill grows faster than
+        // the cell count, so 3-D and large runs default to an iterative
+        // solver with multigrid
         const label directCellLimit =
             dict.lookupOrDefault<label>("directCellLimit", 50000);
         const label nCells =
             returnReduce(matrix.nRows(), sumOp<label>());
         const bool direct =
-            !Pstream::parRun()
-         && matrix.nComponents() < 3
-         && nCells <= directCellLimit;
-        solverType = direct ? "eigenLU" : "petsc";
-        Info<< "Linear solver: " << solverType << " (default for "
+            matrix.nComponents() < 3 && nCells <= directCellLimit;
+        solverType = direct && !Pstream::parRun() ? "eigenLU" : "petsc";
+        const bool addMumps =
+            direct && Pstream::parRun() && !dict.found("preconditioner");
+        if (addMumps)
+        {
+            solverDict.add("preconditioner", word("mumps"));
+        }
+        Info<< "Linear solver: " << solverType
+            << (addMumps ? " with preconditioner mumps" : "")
+            << " (default for "
             << (Pstream::parRun() ? "a parallel run" : "a serial run")
             << " with " << matrix.nComponents() << " unknowns per cell and "
             << nCells << " cells; directCellLimit " << directCellLimit
@@ -69,6 +81,10 @@ Foam::autoPtr<Foam::linearSolver> Foam::linearSolver::New
         )
         {
             solverType = Pstream::parRun() ? "blockJacobiLU" : "eigenLU";
+            if (addMumps)
+            {
+                solverDict.remove("preconditioner");
+            }
             Info<< "    (petsc is not built: " << solverType << " instead)"
                 << endl;
         }
@@ -106,7 +122,7 @@ Foam::autoPtr<Foam::linearSolver> Foam::linearSolver::New
             << exit(FatalIOError);
     }
 
-    return autoPtr<linearSolver>(cstrIter()(dict, matrix));
+    return autoPtr<linearSolver>(cstrIter()(solverDict, matrix));
 }
 
 
