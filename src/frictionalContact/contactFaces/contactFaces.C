@@ -227,6 +227,24 @@ void Foam::contactFaces::copyFace
 }
 
 
+void Foam::contactFaces::mapFaces
+(
+    const contactFaces& ptf,
+    const fvPatchFieldMapper& m
+)
+{
+    resizeFaces(m.size());
+    if (m.direct() && notNull(m.directAddressing()))
+    {
+        const labelUList& addr = m.directAddressing();
+        forAll(addr, i)
+        {
+            copyFace(ptf, addr[i], i);
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::contactFaces::contactFaces()

@@ -428,20 +428,7 @@ Foam::deformableContactFvPatchVectorField::deformableContactFvPatchVectorField
     if (slave_)
     {
         copyContactFaces(ptf);
-        resizeFaces(mapper.size());
-        if
-        (
-            mapper.direct()
-         && notNull(mapper.directAddressing())
-         && mapper.directAddressing().size()
-        )
-        {
-            const labelUList& addr = mapper.directAddressing();
-            forAll(addr, i)
-            {
-                copyFace(ptf, addr[i], i);
-            }
-        }
+        mapFaces(ptf, mapper);
     }
 }
 
@@ -491,15 +478,7 @@ void Foam::deformableContactFvPatchVectorField::autoMap
     if (slave_)
     {
         const deformableContactFvPatchVectorField old(*this);
-        resizeFaces(m.size());
-        if (m.direct() && notNull(m.directAddressing()))
-        {
-            const labelUList& addr = m.directAddressing();
-            forAll(addr, i)
-            {
-                copyFace(old, addr[i], i);
-            }
-        }
+        mapFaces(old, m);
     }
 }
 

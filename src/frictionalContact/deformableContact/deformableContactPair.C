@@ -422,13 +422,8 @@ void Foam::deformableContactFvPatchVectorField::tangent
     List<faceForceTangent>& df
 ) const
 {
-    checkPair();
-    List<faceForceTangent> slaveOwn;
-    List<faceForceTangent> masterOwn;
-    DynamicList<faceCoupling> cs;
-    DynamicList<faceCoupling> cm;
-    slaveSide().pairTangent(k.deltaT, slaveOwn, masterOwn, cs, cm);
-    df.transfer(slave_ ? slaveOwn : masterOwn);
+    DynamicList<faceCoupling> c;
+    derivatives(k, df, c);
 }
 
 
@@ -438,13 +433,26 @@ void Foam::deformableContactFvPatchVectorField::couplingTangent
     DynamicList<faceCoupling>& c
 ) const
 {
+    List<faceForceTangent> df;
+    derivatives(k, df, c);
+}
+
+
+void Foam::deformableContactFvPatchVectorField::derivatives
+(
+    const solidPatchKinematics& k,
+    List<faceForceTangent>& own,
+    DynamicList<faceCoupling>& coupling
+) const
+{
     checkPair();
     List<faceForceTangent> slaveOwn;
     List<faceForceTangent> masterOwn;
     DynamicList<faceCoupling> cs;
     DynamicList<faceCoupling> cm;
     slaveSide().pairTangent(k.deltaT, slaveOwn, masterOwn, cs, cm);
-    c.transfer(slave_ ? cs : cm);
+    own.transfer(slave_ ? slaveOwn : masterOwn);
+    coupling.transfer(slave_ ? cs : cm);
 }
 
 

@@ -30,23 +30,9 @@ void Foam::frictionalContactFvPatchVectorField::mapFaces
     const fvPatchFieldMapper& mapper
 )
 {
-    const label n = mapper.size();
-    resizeFaces(n);
-    search_.setSize(n, obstacleSearch());
+    contactFaces::mapFaces(ptf, mapper);
+    search_.setSize(mapper.size());
     search_ = obstacleSearch();
-    if
-    (
-        mapper.direct()
-     && notNull(mapper.directAddressing())
-     && mapper.directAddressing().size()
-    )
-    {
-        const labelUList& addr = mapper.directAddressing();
-        forAll(addr, i)
-        {
-            copyFace(ptf, addr[i], i);
-        }
-    }
 }
 
 

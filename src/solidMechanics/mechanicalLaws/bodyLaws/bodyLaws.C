@@ -102,10 +102,19 @@ Foam::bodyLaws::bodyLaws
     const label nOrphans = returnReduce(orphans.size(), sumOp<label>());
     if (nOrphans)
     {
+        wordList unlisted;
+        for (const word& z : zones.names())
+        {
+            if (!bodies.found(z))
+            {
+                unlisted.append(z);
+            }
+        }
         FatalIOErrorInFunction(bodies)
             << nOrphans << " cells lie in no cell zone listed in 'bodies' of "
-            << mp.name() << " (listed: " << names_ << "; cell zones of the"
-            << " mesh: " << zones.names() << ")";
+            << mp.name() << ": cell zones without a law " << unlisted
+            << " (listed: " << names_ << "; cell zones of the mesh: "
+            << zones.names() << ")";
         if (orphans.size())
         {
             FatalIOError
