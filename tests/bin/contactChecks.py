@@ -67,7 +67,12 @@ def contactState(case, time, patch):
     d = os.path.join(case, time)
 
     def pf(name):
-        return foamio.readPatchField(os.path.join(d, name), patch, n)
+        # a variable the law does not declare (contactAge of Coulomb's
+        # law) is not written: zero, as a fresh face
+        path = os.path.join(d, name)
+        if not os.path.isfile(path):
+            return [0.0]*n
+        return foamio.readPatchField(path, patch, n)
 
     def de(key):
         return patchEntry(os.path.join(d, "D"), patch, key, n)

@@ -16,19 +16,22 @@ Group
 Description
     Large-strain solid mechanics in the total Lagrangian description: a
     cell-centred finite-volume discretisation of the momentum balance,
-    elastic or elastoplastic at finite strain, quasi-static or with
-    inertia, solved at every time step by a Jacobian-free Newton-Krylov
-    method preconditioned with the compact elastic operator
-    (doc/theory.md). Steps that do not converge are cut back and retried;
-    the run stops with a message after maxCutBacks consecutive failures,
-    keeping the last converged time directory.
+    elastic or elastoplastic at finite strain, plane strain, axisymmetric
+    or 3-D, quasi-static or with inertia, solved at every time step by
+    Newton's method with the exact Jacobian (doc/theory.md). Steps that do
+    not converge are cut back and retried (timeStepController); the run
+    stops with a message after maxCutBacks consecutive failures, keeping
+    the last converged time directory. A restart from any written time
+    takes the same steps as the uninterrupted run.
 
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
-#include "pointFields.H"
 #include "totalLagrangianSolid.H"
-#include "newtonKrylov.H"
+#include "solidOutputFields.H"
+#include "newtonSolver.H"
+#include "timeStepController.H"
+#include "solidRestartState.H"
 #include "OFstream.H"
 #include "clockTime.H"
 #include "writeSchedule.H"
@@ -51,8 +54,6 @@ int main(int argc, char *argv[])
 
     const writeSchedule writes(runTime);
     const scalar userDeltaT = runTime.deltaTValue();
-    scalar deltaT = userDeltaT;
-    label nCutBacks = 0;
     label nSteps = 0;
     label nNewtonTotal = 0;
     label nAccepted = 0;
@@ -75,6 +76,16 @@ int main(int argc, char *argv[])
             << " residualEvaluations forceResidual cutBacks wallTime" << nl;
     }
 
+    // Write the last converged state with what a restart needs [S19]
+    auto writeNow = [&]()
+    {
+        output.update();
+        restartState.set("time", runTime.value());
+        restartState.set("timeStepController", controller.state());
+        restartState.set("solid", solid.state());
+        runTime.writeNow();
+    };
+
     Eigen::VectorXd x, xStart;
     clockTime stepClock;
 
@@ -89,26 +100,39 @@ int main(int argc, char *argv[])
         // the next one): the whole time state is restored on a cut-back
         const TimeState lastConverged(runTime);
 
-        runTime.setDeltaT(writes.step(t0, deltaT), false);
+        runTime.setDeltaT(writes.step(t0, controller.deltaT()), false);
         ++runTime;
 
         Info<< "Time = " << runTime.timeName() << ", deltaT = "
             << runTime.deltaTValue() << endl;
 
         stepClock.timeIncrement();
-        solid.beginStep(x, xStart, predictor);
-        newtonKrylov::result res = nonlinearSolver.solve(solid, x, xStart);
 
-        // The time extrapolation misleads at a kink of the load path (a
-        // hold after a ramp): retry the same step from the last solution
-        if (!res.converged && predictor)
+        newtonSolver::result res;
+        label nNewton = 0;
+        timeStepController::action action = timeStepController::RETRY;
+        const label nCutBacks = controller.nFailures();
+        bool retry = false;
+        while (action == timeStepController::RETRY)
         {
-            Info<< "    retrying the step without the predictor" << endl;
-            solid.beginStep(x, xStart, false);
-            const label nNewton = res.newtonIterations;
-            res = nonlinearSolver.solve(solid, x, xStart);
-            res.newtonIterations += nNewton;
+            // the retry of a failed attempt: from the last solution,
+            // Jacobian-free (a bounded correction where the exact Jacobian
+            // is singular)
+            solid.beginStep(x, xStart, controller.predict());
+            res = nonlinearSolver.solve(solid, x, xStart, retry);
+            nNewton += res.newtonIterations;
+            action =
+                res.converged
+              ? controller.converged()
+              : controller.failed(runTime.deltaTValue());
+            retry = action == timeStepController::RETRY;
+            if (retry)
+            {
+                Info<< "    retrying the step without the predictor,"
+                    << " Jacobian-free" << endl;
+            }
         }
+        res.newtonIterations = nNewton;
 
         if (res.accepted)
         {
@@ -119,54 +143,38 @@ int main(int argc, char *argv[])
 
         if (!res.converged)
         {
-            Info<< "    step not converged (" << res.reason << ") after "
-                << res.newtonIterations << " Newton iterations, force residual "
-                << res.forceResidual << endl;
+            Info<< "    step not converged (" << res.reason.c_str()
+                << ") after " << res.newtonIterations << " Newton iterations,"
+                << " force residual " << res.forceResidual << endl;
 
             const scalar failedTime = runTime.value();
             const scalar failedDeltaT = runTime.deltaTValue();
-            const bool tooSmall =
-                cutBackFactor*runTime.deltaTValue() < minDeltaTRatio*userDeltaT;
+            runTime.TimeState::operator=(lastConverged);
 
-            if (++nCutBacks > maxCutBacks || tooSmall)
+            if (action == timeStepController::STOP)
             {
                 // Keep the last converged state on disk
-                runTime.TimeState::operator=(lastConverged);
-                if (t0 > runTime.startTime().value())
+                const bool atStart = t0 <= startValue;
+                if (!atStart)
                 {
-                    solid.prepareWrite();
-                    runTime.writeNow();
+                    writeNow();
                 }
-
-                // nCutBacks counts the failed attempts: one more than the
-                // cut-backs made
                 FatalErrorInFunction
-                    << "The step to time " << failedTime
-                    << " did not converge after " << nCutBacks - 1
-                    << " cut-backs of the time step (last deltaT "
-                    << failedDeltaT << " s, reason: " << res.reason
-                    << ")." << nl
-                    << "The last converged time, " << t0 << ", is written"
-                    << (
-                           t0 > runTime.startTime().value()
-                         ? ";"
-                         : " (the start time: no step converged);"
-                       )
-                    << " check the loading, the boundary conditions"
-                    << " and the solid controls in system/fvSolution" << nl
-                    << exit(FatalError);
+                    << controller.stopMessage
+                       (
+                           failedTime, failedDeltaT, res.reason, t0, atStart
+                       ).c_str()
+                    << nl << exit(FatalError);
             }
 
-            deltaT = cutBackFactor*runTime.deltaTValue();
-            runTime.TimeState::operator=(lastConverged);
-            Info<< "    cutting the time step back to " << deltaT
-                << " s and retrying (" << nCutBacks << " of " << maxCutBacks
-                << ")" << nl << endl;
+            Info<< "    cutting the time step back to " << controller.deltaT()
+                << " s and retrying (" << controller.nFailures() << " of "
+                << controller.maxCutBacks() << ")" << nl << endl;
             continue;
         }
 
         solid.commit(x);
-        solid.reportForces();
+        output.report();
 
         ++nSteps;
         nNewtonTotal += res.newtonIterations;
@@ -187,15 +195,11 @@ int main(int argc, char *argv[])
                 << nCutBacks << ' ' << runTime.elapsedCpuTime() << endl;
         }
 
-        nCutBacks = 0;
-        deltaT = min(timeStepGrowth*deltaT, userDeltaT);
-
         if (writes.due(t0))
         {
             // the output fields (sigma, pointD, ...) follow this schedule,
             // not Time's own write test
-            solid.prepareWrite();
-            runTime.writeNow();
+            writeNow();
         }
 
         Info<< "    ExecutionTime = " << runTime.elapsedCpuTime() << " s"

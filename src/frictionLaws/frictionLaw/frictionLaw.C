@@ -28,7 +28,8 @@ namespace Foam
 Foam::frictionLaw::frictionLaw(const dictionary& dict)
 :
     KN_(frictionParameters::positive(dict, "KN")),
-    KT_(frictionParameters::positive(dict, "KT"))
+    KT_(frictionParameters::positive(dict, "KT")),
+    layout_()
 {}
 
 
@@ -66,7 +67,6 @@ void Foam::frictionLaw::openContact
     out.state = initialState();
     out.state.totalSlip = in.gT;
     out.state.plasticSlip = in.gT;
-    out.state.normalSlip = old.normalSlip;
     out.state.cumulatedSlip = old.cumulatedSlip;
     out.state.status = frictionState::OPEN;
 }

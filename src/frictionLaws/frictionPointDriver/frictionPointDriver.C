@@ -72,9 +72,8 @@ Foam::frictionPointDriver::sample Foam::frictionPointDriver::step
     row.tN = last_.tN;
     row.tT = last_.tT.x();
     row.mu = last_.tN > 0 ? last_.tT.x()/last_.tN : 0;
-    row.contactAge = state_.contactAge;
-    row.lubricationWeight = state_.lubricationWeight;
-    row.status = state_.status;
+    row.loadPoint = loadPoint_;
+    row.state = state_;
     return row;
 }
 
@@ -110,7 +109,21 @@ Foam::frictionPointDriver::springSliderStep
     const scalar dt
 )
 {
-    const scalar xL = loadPoint_ + V*dt;
+    return springSliderMove(M, k, V*dt, dt);
+}
+
+
+Foam::frictionPointDriver::sample
+Foam::frictionPointDriver::springSliderMove
+(
+    const scalar M,
+    const scalar k,
+    const scalar dxL,
+    const scalar dt
+)
+{
+    const scalar V = dxL/dt;
+    const scalar xL = loadPoint_ + dxL;
     const scalar x0 = slip_;
     const scalar v0 = velocity_;
     const scalar mdt2 = M/(dt*dt);
@@ -158,7 +171,7 @@ void Foam::frictionPointDriver::runSpringSlider
 (
     const scalar M,
     const scalar k,
-    const scalar V,
+    const Function1<scalar>& V,
     const scalar endTime,
     const scalar dt,
     DynamicList<sample>& out,
@@ -168,7 +181,10 @@ void Foam::frictionPointDriver::runSpringSlider
     label i = 0;
     while (time_ < endTime - 1e-9*dt)
     {
-        const sample row = springSliderStep(M, k, V, min(dt, endTime - time_));
+        // load point moved exactly by the integral of V over the step
+        const scalar h = min(dt, endTime - time_);
+        const sample row =
+            springSliderMove(M, k, V.integrate(time_, time_ + h), h);
         if (++i % every == 0 || time_ >= endTime - 1e-9*dt)
         {
             out.append(row);
@@ -177,20 +193,70 @@ void Foam::frictionPointDriver::runSpringSlider
 }
 
 
-void Foam::frictionPointDriver::writeHeader(Ostream& os)
+namespace Foam
 {
-    os  << "# time[s] slip[m] slipRate[m/s] tN[Pa] tT[Pa] mu[-]"
-        << " contactAge lubricationWeight status" << nl;
+    //- The law's own scalar variables shown in ParaView: the table columns
+    //  between mu and the status
+    static DynamicList<const frictionStateEntry*> lawColumns
+    (
+        const frictionStateLayout& layout
+    )
+    {
+        DynamicList<const frictionStateEntry*> cols;
+        for (const frictionStateEntry& e : layout.entries())
+        {
+            if
+            (
+                e.kind == frictionStateEntry::SCALAR && e.show
+             && e.slot >= frictionState::firstLawSlot
+            )
+            {
+                cols.append(&e);
+            }
+        }
+        return cols;
+    }
 }
 
 
-void Foam::frictionPointDriver::write(Ostream& os, const UList<sample>& rows)
+void Foam::frictionPointDriver::writeHeader
+(
+    Ostream& os,
+    const bool loadPoint
+) const
 {
+    os  << "# time[s] slip[m] slipRate[m/s] tN[Pa] tT[Pa] mu[-]";
+    for (const frictionStateEntry* e : lawColumns(law_.stateLayout()))
+    {
+        os  << ' ' << frictionStateLayout::column(*e);
+    }
+    os  << " status" << (loadPoint ? " loadPoint[m]" : "") << nl;
+}
+
+
+void Foam::frictionPointDriver::write
+(
+    Ostream& os,
+    const UList<sample>& rows,
+    const bool loadPoint
+) const
+{
+    const DynamicList<const frictionStateEntry*> cols =
+        lawColumns(law_.stateLayout());
     for (const sample& r : rows)
     {
         os  << r.time << ' ' << r.slip << ' ' << r.slipRate << ' ' << r.tN
-            << ' ' << r.tT << ' ' << r.mu << ' ' << r.contactAge << ' '
-            << r.lubricationWeight << ' ' << r.status << nl;
+            << ' ' << r.tT << ' ' << r.mu;
+        for (const frictionStateEntry* e : cols)
+        {
+            os  << ' ' << r.state.scalarSlot(e->slot);
+        }
+        os  << ' ' << r.state.status;
+        if (loadPoint)
+        {
+            os  << ' ' << r.loadPoint;
+        }
+        os  << nl;
     }
 }
 

@@ -12,6 +12,7 @@ License
 
 #include "frictionParameters.H"
 #include "error.H"
+#include "scalarList.H"
 
 void Foam::frictionParameters::check
 (
@@ -111,6 +112,30 @@ Foam::scalar Foam::frictionParameters::unitInterval
     const scalar v = dict.get<scalar>(key);
     check(dict, key, v, 0, closed, 1, closed);
     return v;
+}
+
+Foam::Pair<Foam::scalar> Foam::frictionParameters::range
+(
+    const dictionary& dict,
+    const word& key,
+    const Pair<scalar>& deflt
+)
+{
+    const scalarList r
+    (
+        dict.getOrDefault<scalarList>
+        (
+            key, scalarList({deflt.first(), deflt.second()})
+        )
+    );
+    if (r.size() != 2 || !(r[0] > 0) || !(r[1] > r[0]))
+    {
+        FatalIOErrorInFunction(dict)
+            << "keyword '" << key << "' must be (lo hi) with 0 < lo < hi,"
+            << " got " << r << " (dictionary " << dict.name() << ")"
+            << exit(FatalIOError);
+    }
+    return Pair<scalar>(r[0], r[1]);
 }
 
 // ************************************************************************* //

@@ -3,7 +3,7 @@ License
     This file is part of triboFoam, GPL-3.0-or-later.
 
 Description
-    frictionalContact: forces and stiffness handed to the solver, the commit
+    frictionalContact: forces and their tangent handed to the solver, the commit
     of a converged step, reports and the fields written for ParaView.
 
 \*---------------------------------------------------------------------------*/
@@ -12,7 +12,6 @@ Description
 #include "addToRunTimeSelectionTable.H"
 #include "volFields.H"
 #include "OFstream.H"
-#include "frictionStateEntries.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -73,22 +72,47 @@ void Foam::frictionalContactFvPatchVectorField::updateFields() const
             .boundaryFieldRef()[pi];
     };
 
-    using namespace frictionStateEntries;
-    scalarOut("contactAge", dimTime) = member(state_, &frictionState::contactAge);
-    scalarOut("lubricationWeight", dimless) =
-        member(state_, &frictionState::lubricationWeight);
-    scalarOut("slipRate", dimVelocity) =
-        member(state_, &frictionState::slipRate);
-    scalarOut(statusKeyword, dimless) = status(state_);
-    scalarOut("cumulatedSlip", dimLength) =
-        member(state_, &frictionState::cumulatedSlip);
-    vectorOut("plasticSlip", dimLength) =
-        member(state_, &frictionState::plasticSlip);
+    // The law's state variables it marks shown
+    for (const frictionStateEntry& e : layout_.entries())
+    {
+        if (!e.show)
+        {
+            continue;
+        }
+        if (e.kind == frictionStateEntry::VECTOR)
+        {
+            vectorOut(e.name, dimensionSet(e.dimensions)) = layout_.vectorValues(state_, e);
+        }
+        else
+        {
+            scalarOut(e.name, dimensionSet(e.dimensions)) = layout_.scalarValues(state_, e);
+        }
+    }
     scalarOut("contactPressure", dimPressure) = contactPressure_;
     scalarOut("nominalContactPressure", dimPressure) =
         nominalContactPressure_;
     vectorOut("frictionTraction", dimPressure) = frictionTraction_;
     scalarOut("penetration", dimLength) = penetration_;
+}
+
+
+void Foam::frictionalContactFvPatchVectorField::sampleSensitivity
+(
+    const frictionResult& res
+)
+{
+    // [F21] at the face's own pressure, sliding rate and state
+    const frictionLaw& l = law();
+    if (l.nRateStates() >= 0 && res.state.status == frictionState::SLIP)
+    {
+        frictionLaw::rateStates x(scalar(0));
+        l.rateStatesOf(res.state, x);
+        sensitivity_.add
+        (
+            l.rateSensitivity(res.state.slipRate, x, res.tN),
+            res.state.slipRate, res.tN
+        );
+    }
 }
 
 
@@ -152,32 +176,119 @@ void Foam::frictionalContactFvPatchVectorField::force
 }
 
 
-bool Foam::frictionalContactFvPatchVectorField::stiffness
+void Foam::frictionalContactFvPatchVectorField::tangent
 (
     const solidPatchKinematics& k,
-    tensorField& K
+    List<faceForceTangent>& df
 ) const
 {
-    // [C6] -df/dD from the law's consistent tangent (gN = -gap: dgN/dD = -n)
-    frictionResult res;
-    vector n;
-    scalar area;
-    scalar gap;
-    forAll(K, i)
+    // [C6] the exact derivative of f = da (tN n - tT) with respect to the
+    // face displacement and deformation gradient, the face state held
+    df.setSize(k.F.size());
+    df = faceForceTangent();
+
+    const scalarField& V = patch().boundaryMesh().mesh().V();
+    const labelUList& faceCells = patch().faceCells();
+    const scalar e = contactSmoothing_;
+
+    forAll(df, facei)
     {
-        if (evaluateFace(i, k, res, n, area, gap) && res.tN > 0)
+        const frictionState& old = state_[facei];
+
+        const point x(k.Cf0[facei] + k.D[facei]);
+        obstaclePoint cp;
+        if
+        (
+            !obstacle_->nearest
+            (
+                x, k.time, searchDistance_,
+                searchRefreshFraction_*V[faceCells[facei]]/mag(k.Sf0[facei]),
+                cp, search_[facei]
+            )
+        )
         {
-            const tensor P(tensor::I - sqr(n));
-            K[i] = area*(res.dtNdgN*sqr(n) + (res.dtTdgT & P));
-            // keep the preconditioner symmetric and definite
-            K[i] = symm(K[i]);
+            continue;
         }
-        else
+
+        const vector& n = cp.n;
+        const tensor& N = cp.dndx;
+        const tensor P(tensor::I - sqr(n));
+        const vector v
+        (
+            old.totalSlip + (k.D[facei] - k.Dold[facei])
+          - obstacle_->materialDisplacement(cp.p, k.time - k.deltaT, k.time)
+        );
+
+        frictionInput in;
+        in.gN = smoothedPenetration(-cp.gap);
+        in.gT = P & v;
+        in.n = n;
+        in.dt = k.deltaT;
+        frictionResult res;
+        law().update(old, in, res);
+
+        // gN = smoothed(-gap) [C2b]; gT = (I - n n).v [C3]
+        const scalar g = -cp.gap;
+        const scalar dSmooth =
+            g >= e ? 1 : (g <= -e ? 0 : (g + e)/(2*e));
+        const vector dgNdx(-dSmooth*cp.dgapdx);
+        const tensor dvdx
+        (
+            tensor::I
+          - (
+                obstacle_->materialDisplacementGradient
+                (
+                    k.time - k.deltaT, k.time
+                ) & cp.dpdx
+            )
+        );
+        const tensor dgTdx
+        (
+            (P & dvdx) - (n & v)*N - n*(N.T() & v)
+        );
+
+        // the law's tangent [F7]; on a curved obstacle also the turn of
+        // the tangent plane inside the law, by central differences in n
+        tensor dtTdx((res.dtTdgT & dgTdx) + res.dtTdgN*dgNdx);
+        if (magSqr(N) > 0)
         {
-            K[i] = Zero;
+            const scalar h = 1e-6;
+            vector t1(P & vector(1, 0, 0));
+            if (magSqr(t1) < 0.1)
+            {
+                t1 = P & vector(0, 1, 0);
+            }
+            t1 /= mag(t1);
+            const vector t2(n ^ t1);
+            for (const vector& tj : {t1, t2})
+            {
+                frictionInput inp(in);
+                frictionInput inm(in);
+                inp.n = (n + h*tj)/mag(n + h*tj);
+                inm.n = (n - h*tj)/mag(n - h*tj);
+                frictionResult rp;
+                frictionResult rm;
+                law().update(old, inp, rp);
+                law().update(old, inm, rm);
+                dtTdx += ((rp.tT - rm.tT)/(2*h))*(N.T() & tj);
+            }
+        }
+
+        // [C4] area da = |a|, a = J F^-T . S0
+        const tensor& F = k.F[facei];
+        const tensor FinvT(inv(F).T());
+        const vector a(det(F)*(FinvT & k.Sf0[facei]));
+        const scalar area = mag(a);
+        const tensor dAreadF(area*FinvT - a*(inv(F) & (a/area)));
+
+        const vector t(res.tN*n - res.tT);
+        df[facei].dfdD =
+            area*(n*(res.dtNdgN*dgNdx) + res.tN*N - dtTdx);
+        for (direction i = 0; i < 3; ++i)
+        {
+            df[facei].dfdF[i] = t[i]*dAreadF;
         }
     }
-    return true;
 }
 
 
@@ -222,6 +333,7 @@ void Foam::frictionalContactFvPatchVectorField::commit
     maxPenetrationAt_ = Zero;
     nContact_ = 0;
     nSlip_ = 0;
+    sensitivity_ = frictionLaw::sensitivitySummary();
 
     frictionResult res;
     vector n;
@@ -249,6 +361,7 @@ void Foam::frictionalContactFvPatchVectorField::commit
                 if (res.state.status == 2)
                 {
                     ++nSlip_;
+                    sampleSensitivity(res);
                 }
                 const scalar pen = max(-gap, scalar(0));
                 if (pen > maxPenetration_)
@@ -276,6 +389,24 @@ void Foam::frictionalContactFvPatchVectorField::commit
     reduce(frictionForce_, sumOp<vector>());
     reduce(nContact_, sumOp<label>());
     reduce(nSlip_, sumOp<label>());
+    {
+        frictionLaw::sensitivitySummary& s = sensitivity_;
+        const scalar localMin = s.minimum;
+        reduce(s.minimum, minOp<scalar>());
+        if (localMin != s.minimum)
+        {
+            s.vAtMin = -GREAT;
+            s.pAtMin = -GREAT;
+        }
+        reduce(s.vAtMin, maxOp<scalar>());
+        reduce(s.pAtMin, maxOp<scalar>());
+        reduce(s.nSampled, sumOp<label>());
+        reduce(s.nNegative, sumOp<label>());
+        reduce(s.vNegMin, minOp<scalar>());
+        reduce(s.vNegMax, maxOp<scalar>());
+        reduce(s.pNegMin, minOp<scalar>());
+        reduce(s.pNegMax, maxOp<scalar>());
+    }
     {
         // location of the largest penetration over all processors
         scalarList pens(Pstream::nProcs(), scalar(0));
@@ -308,6 +439,27 @@ void Foam::frictionalContactFvPatchVectorField::report
         << " penetration " << maxPenetration_ << " m at "
         << maxPenetrationAt_ << endl;
 
+    // [F21] sliding faces with a negative instantaneous rate sensitivity
+    const frictionLaw::sensitivitySummary& s = sensitivity_;
+    if (s.nNegative)
+    {
+        if (!illPosedWarned_)
+        {
+            law().warnIllPosed
+            (
+                s,
+                "sliding faces of patch " + patch().name() + " at t = "
+              + name(k.time)
+            );
+            illPosedWarned_ = true;
+        }
+        Info<< "    contact " << patch().name() << ": ill-posed sliding on "
+            << s.nNegative << " of " << s.nSampled << " sliding faces"
+            << " (d tT/d ln v < 0 at tN " << s.pNegMin << " to "
+            << s.pNegMax << " Pa, v " << s.vNegMin << " to " << s.vNegMax
+            << " m/s; min " << s.minimum << " Pa)" << endl;
+    }
+
     // [C2c] obstacle searches since the last report (this step and any
     // cut-back attempts before it)
     const labelPair n
@@ -335,23 +487,27 @@ void Foam::frictionalContactFvPatchVectorField::write(Ostream& os) const
     os.writeEntry("contactSmoothing", contactSmoothing_);
     os.writeEntry("searchRefreshFraction", searchRefreshFraction_);
 
-    // Face state for restart; none when it is not the law's (a utility
-    // without the law, e.g. decomposePar of time 0: written zeros would be
-    // read back as a contact age of 0 instead of the fresh contact's)
-    using namespace frictionStateEntries;
-    if (stateKnown_)
-    {
-        for (const auto& e : vectors)
-        {
-            member(state_, e.second)().writeEntry(e.first, os);
-        }
-        for (const auto& e : scalars)
-        {
-            member(state_, e.second)().writeEntry(e.first, os);
-        }
-        status(state_)().writeEntry(statusKeyword, os);
-    }
+    // Face state for restart, as the law declares it
+    layout_.write(os, state_);
     dissipation_.writeEntry("dissipatedEnergy", os);
+
+    // [C2c] search records (triangulated obstacles): -1 not searched, -2
+    // nothing in reach, else the triangle followed
+    if (obstacle_->cachesSearches())
+    {
+        labelField tri(search_.size());
+        vectorField x0(search_.size());
+        forAll(search_, i)
+        {
+            tri[i] =
+                !search_[i].searched ? -1
+              : !search_[i].hit ? -2
+              : search_[i].hint;
+            x0[i] = search_[i].x0;
+        }
+        tri.writeEntry("searchTriangle", os);
+        x0.writeEntry("searchPoint", os);
+    }
     writeEntry("value", os);
 }
 

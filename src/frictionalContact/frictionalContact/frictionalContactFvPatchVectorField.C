@@ -8,7 +8,6 @@ License
 #include "wallFvPatch.H"
 #include "volFields.H"
 #include "IOdictionary.H"
-#include "frictionStateEntries.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -57,6 +56,7 @@ void Foam::frictionalContactFvPatchVectorField::createLaw() const
     }
     law_ = frictionLaw::New(dict);
     effectiveLawDict_ = dict;
+    layout_ = law_->stateLayout();
 
     Info<< "frictionalContact on patch " << patch().name() << ": law "
         << lawDict_.get<word>("type") << ", obstacle "
@@ -85,8 +85,8 @@ void Foam::frictionalContactFvPatchVectorField::copyFrom
     searchDistance_ = ptf.searchDistance_;
     contactSmoothing_ = ptf.contactSmoothing_;
     searchRefreshFraction_ = ptf.searchRefreshFraction_;
+    layout_ = ptf.layout_;
     state_ = ptf.state_;
-    stateKnown_ = ptf.stateKnown_;
     search_ = ptf.search_;
     contactPressure_ = ptf.contactPressure_;
     nominalContactPressure_ = ptf.nominalContactPressure_;
@@ -100,6 +100,8 @@ void Foam::frictionalContactFvPatchVectorField::copyFrom
     maxPenetrationAt_ = ptf.maxPenetrationAt_;
     nContact_ = ptf.nContact_;
     nSlip_ = ptf.nSlip_;
+    sensitivity_ = ptf.sensitivity_;
+    illPosedWarned_ = ptf.illPosedWarned_;
     linearised_ = false;
 }
 
@@ -137,14 +139,12 @@ void Foam::frictionalContactFvPatchVectorField::copyFace
 
 void Foam::frictionalContactFvPatchVectorField::readState
 (
-    const dictionary& dict
+    const dictionary& dict,
+    const frictionLaw& l
 )
 {
     const label n = patch().size();
-    const frictionState fresh =
-        law_.valid() ? law_->initialState() : frictionState();
-    state_.setSize(n, fresh);
-    stateKnown_ = law_.valid();
+    state_.setSize(n, l.initialState());
     search_.setSize(n, obstacleSearch());
     contactPressure_.setSize(n, 0);
     nominalContactPressure_.setSize(n, 0);
@@ -152,28 +152,37 @@ void Foam::frictionalContactFvPatchVectorField::readState
     penetration_.setSize(n, 0);
     dissipation_.setSize(n, 0);
 
-    // Restart: the state written by write()
-    using namespace frictionStateEntries;
-    if (dict.found(vectors[0].first))
+    // Restart: the state written by write(), as the law declares it
+    if (layout_.foundIn(dict))
     {
-        for (const auto& e : vectors)
+        const wordList missing = layout_.read(dict, state_);
+        if (missing.size())
         {
-            setMember(state_, e.second, vectorField(e.first, dict, n));
+            WarningInFunction
+                << "patch " << patch().name() << ": the restart state in "
+                << dict.name() << " has no " << missing << " (written by"
+                << " another law?); law " << lawDict_.get<word>("type")
+                << " starts those as in a fresh contact" << endl;
         }
-        for (const auto& e : scalars)
-        {
-            setMember(state_, e.second, scalarField(e.first, dict, n));
-        }
-        const scalarField status(statusKeyword, dict, n);
-        forAll(state_, i)
-        {
-            state_[i].status = label(status[i] + 0.5);
-        }
-        stateKnown_ = true;
     }
     if (dict.found("dissipatedEnergy"))
     {
         dissipation_ = scalarField("dissipatedEnergy", dict, n);
+    }
+
+    // [C2c] the search records as written: a restart then re-projects
+    // where the uninterrupted run would (the same triangles, bit for bit)
+    if (dict.found("searchTriangle"))
+    {
+        const labelField tri("searchTriangle", dict, n);
+        const vectorField x0("searchPoint", dict, n);
+        forAll(search_, i)
+        {
+            search_[i].searched = tri[i] != -1;
+            search_[i].hit = tri[i] >= 0;
+            search_[i].hint = max(tri[i], label(-1));
+            search_[i].x0 = x0[i];
+        }
     }
 }
 
@@ -274,7 +283,6 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     searchDistance_(GREAT),
     contactSmoothing_(0),
     searchRefreshFraction_(0.2),
-    stateKnown_(false),
     normalForce_(Zero),
     frictionForce_(Zero),
     totalDissipation_(0),
@@ -282,6 +290,7 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     maxPenetrationAt_(Zero),
     nContact_(0),
     nSlip_(0),
+    illPosedWarned_(false),
     linearised_(false)
 {}
 
@@ -314,6 +323,7 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     maxPenetrationAt_(Zero),
     nContact_(0),
     nSlip_(0),
+    illPosedWarned_(false),
     linearised_(false)
 {
     if (!isA<wallFvPatch>(p))
@@ -372,13 +382,23 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     obstacle_ = rigidObstacle::New(obstacleDict_, db().time().globalPath());
 
     // The law needs the solid's moduli for automatic penalties; utilities
-    // such as decomposePar read D without them and only copy the entries
+    // such as decomposePar read D without them and only copy the entries,
+    // for which the law's state layout is enough (penalties do not change
+    // it)
     if (db().foundObject<IOdictionary>("mechanicalProperties"))
     {
         createLaw();
+        readState(dict, law_());
     }
-
-    readState(dict);
+    else
+    {
+        dictionary d(lawDict_);
+        d.set("KN", 1.0);
+        d.set("KT", 1.0);
+        const autoPtr<frictionLaw> layoutLaw(frictionLaw::New(d));
+        layout_ = layoutLaw->stateLayout();
+        readState(dict, layoutLaw());
+    }
 
     if (dict.found("value"))
     {
@@ -412,12 +432,14 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     maxPenetrationAt_(Zero),
     nContact_(0),
     nSlip_(0),
+    illPosedWarned_(false),
     linearised_(false)
 {
     // iF may be a null field (reconstructPar): the time comes from the mesh
     obstacleDict_ = ptf.obstacleDict_;
     lawDict_ = ptf.lawDict_;
     effectiveLawDict_ = ptf.effectiveLawDict_;
+    layout_ = ptf.layout_;
     obstacle_ = rigidObstacle::New
     (
         obstacleDict_, p.boundaryMesh().mesh().time().globalPath()
@@ -425,7 +447,6 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
 
     const label n = mapper.size();
     state_.setSize(n);
-    stateKnown_ = ptf.stateKnown_;
     search_.setSize(n, obstacleSearch());
     contactPressure_.setSize(n, 0);
     nominalContactPressure_.setSize(n, 0);

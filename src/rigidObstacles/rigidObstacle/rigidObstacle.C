@@ -178,28 +178,13 @@ bool Foam::rigidObstacle::nearest
     const label hint
 ) const
 {
-    if (!moving())
-    {
-        return nearestInitial(x, maxDistance, cp, hint);
-    }
-
-    const tensor R(rotation(t));
-    const vector T(translation(t));
-
-    const point x0 = ((x - rotationOrigin_ - T) & R) + rotationOrigin_;
-
+    const point x0 = toInitial(x, t);
     obstaclePoint cp0;
     if (!nearestInitial(x0, maxDistance, cp0, hint))
     {
         return false;
     }
-
-    // Distances and hence the gap are invariant under the rigid motion
-    cp.p = (R & (cp0.p - rotationOrigin_)) + rotationOrigin_ + T;
-    cp.n = R & cp0.n;
-    cp.gap = cp0.gap;
-    cp.hint = cp0.hint;
-
+    currentFrame(x0, cp0, t, cp);
     return true;
 }
 
@@ -257,20 +242,57 @@ bool Foam::rigidObstacle::nearest
     }
     search.hint = cp0.hint;
 
+    currentFrame(x0, cp0, t, cp);
+    return true;
+}
+
+
+void Foam::rigidObstacle::currentFrame
+(
+    const point& x0,
+    const obstaclePoint& cp0,
+    const scalar t,
+    obstaclePoint& cp
+) const
+{
+    // [C6] gap derivative from those of p and n: gap = (x - p) . n
+    const vector dgapdx0
+    (
+        ((tensor::I - cp0.dpdx).T() & cp0.n) + (cp0.dndx.T() & (x0 - cp0.p))
+    );
+
     if (!moving())
     {
         cp = cp0;
-        return true;
+        cp.dgapdx = dgapdx0;
+        return;
     }
 
-    // Distances and hence the gap are invariant under the rigid motion
+    // Distances and hence the gap are invariant under the rigid motion;
+    // points, normals and their derivatives rotate
     const tensor R(rotation(t));
     cp.p = (R & (cp0.p - rotationOrigin_)) + rotationOrigin_ + translation(t);
     cp.n = R & cp0.n;
     cp.gap = cp0.gap;
     cp.hint = cp0.hint;
+    cp.dndx = R & cp0.dndx & R.T();
+    cp.dpdx = R & cp0.dpdx & R.T();
+    cp.dgapdx = R & dgapdx0;
+}
 
-    return true;
+
+Foam::tensor Foam::rigidObstacle::materialDisplacementGradient
+(
+    const scalar t0,
+    const scalar t1
+) const
+{
+    if (!moving())
+    {
+        return Zero;
+    }
+    // p - (R0 R1^T (p - o - T1) + o + T0)
+    return tensor::I - (rotation(t0) & rotation(t1).T());
 }
 
 

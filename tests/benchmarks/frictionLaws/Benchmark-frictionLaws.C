@@ -214,7 +214,12 @@ int main(int argc, char* argv[])
             // exact steady start: theta = L/V, spring at the steady force
             for (label i = 0; i < 4000; ++i) drv.step(drv.slip() + V*0.05, 0.05);
             drv.setSpringStretch(drv.last().tT.x()/k);
-            drv.state().contactAge *= 1.05;
+            const frictionStateLayout& layout = law->stateLayout();
+            layout.setValue
+            (
+                drv.state(), "contactAge",
+                1.05*layout.value(drv.state(), "contactAge")
+            );
             std::vector<scalar> mu(nOut);
             for (label o = 0; o < nOut; ++o)
             {

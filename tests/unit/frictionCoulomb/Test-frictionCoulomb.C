@@ -7,14 +7,13 @@ Description
     alpha = 0): stick below the threshold (tT = KT gT exactly), |tT| = mu tN
     in slip, return direction along the trial traction, consistent tangent
     against central finite differences (1e-6 relative), static/dynamic
-    coefficients, open contact, input checks, and state IO round trip.
+    coefficients, open contact, input checks. The state's serialisation
+    is tested for every law in frictionStateLayout.
 
 \*---------------------------------------------------------------------------*/
 
 #include "unitTest.H"
 #include "frictionTestTools.H"
-#include "OStringStream.H"
-#include "List.H"
 
 using namespace Foam;
 
@@ -116,35 +115,6 @@ int main()
         unitTest::checkAbs("open: tT", mag(r.tT), 0, 0);
         unitTest::checkTrue("open status", r.state.status == 0);
         in.gN = 1e-5;
-    }
-
-    Info<< "State IO round trip" << endl;
-    {
-        frictionResult r;
-        in.gT = 3e-6*t1;
-        law->update(old, in, r);
-        OStringStream os;
-        os.precision(17);
-        os << r.state;
-        IStringStream is(os.str());
-        frictionState back;
-        is >> back;
-        unitTest::checkTrue("read back == written", back == r.state);
-
-        // A list, as the boundary condition writes it
-        List<frictionState> states(3, r.state);
-        states[1] = law->initialState();
-        OStringStream ol;
-        ol.precision(17);
-        ol << states;
-        IStringStream il(ol.str());
-        List<frictionState> statesBack(il);
-        unitTest::checkTrue
-        (
-            "list read back == written",
-            statesBack.size() == 3 && statesBack[0] == states[0]
-         && statesBack[1] == states[1] && statesBack[2] == states[2]
-        );
     }
 
     Info<< "Input checks" << endl;

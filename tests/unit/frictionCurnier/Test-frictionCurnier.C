@@ -120,7 +120,7 @@ int main()
             law->update(old, in, r);
             maxNormal = max(maxNormal, mag((r.state.plasticSlip - old.plasticSlip) & n));
             maxTN = max(maxTN, mag(r.tN - tN));
-            maxDSN = max(maxDSN, mag(r.state.normalSlip));
+            maxDSN = max(maxDSN, mag(law->stateLayout().value(r.state, "normalSlip")));
             old = r.state;
         }
         unitTest::checkTrue("sliding", old.status == 2);
@@ -146,7 +146,8 @@ int main()
             g += 5e-8; in.gT = g*ex; law->update(old, in, r); old = r.state;
             forwardF = r.tT.x();
         }
-        const scalar sp = old.tearSlip.x();
+        const scalar sp =
+            law->stateLayout().vectorValue(old, "tearSlip").x();
         unitTest::checkRel("forward threshold Y + QT s", forwardF, Y + QT*sp, 1e-10);
         // reverse until slip restarts
         scalar reverseF = 0;
@@ -205,7 +206,7 @@ int main()
             const vector t2 = n ^ t1;
             frictionState old = law->initialState();
             old.plasticSlip = 1e-6*t1;
-            old.tearSlip = 0.5e-6*t1;
+            law->stateLayout().setVectorValue(old, "tearSlip", 0.5e-6*t1);
             old.cumulatedSlip = 2e-6;
             frictionInput in; in.gN = gN; in.n = n; in.dt = 1;
             in.gT = old.plasticSlip + 0.5e-6*t1 + 0.4e-6*t2;

@@ -14,7 +14,7 @@ Description
       - alpha = 0: tT = f mu0 tN exactly in sliding (rate-state Coulomb);
         alpha = 1: tT = eta_b v exactly (Newtonian film);
       - consistent tangent vs finite differences (1e-6);
-      - a_eff check and input checks.
+      - the well-posedness check ([F21]) and input checks.
 
 \*---------------------------------------------------------------------------*/
 
@@ -54,8 +54,9 @@ int main()
         // and sliding at a prescribed rate does not settle (ill-posed, [F21])
         const scalar v = 1e-4, dt = 0.05*D0/v;
         for (label i = 0; i < 2000; ++i) drv.step(drv.slip() + v*dt, dt);
-        const scalar theta = drv.state().contactAge;
-        unitTest::checkAbs("f = 1", lub.f(v, theta), 1, 1e-9);
+        const scalar theta =
+            law->stateLayout().value(drv.state(), "contactAge");
+        unitTest::checkRel("theta = D0/v (f = 1)", theta, D0/v, 1e-9);
         scalar m0, dm0, alpha, da;
         lub.mu0(v, m0, dm0);
         lub.lubrication().alpha(v, alpha, da);
@@ -81,25 +82,28 @@ int main()
         for (label i = 0; i < 1000; ++i) drv.step(drv.slip() + v1*dt, dt);
         const scalar s0 = drv.slip();
         dt = 0.02*D0/v2;
-        scalar errF = 0, errT = 0;
+        scalar m0, dm0;
+        lub.mu0(v2, m0, dm0);
+        scalar errTheta = 0, errT = 0;
         for (label i = 0; i < 500; ++i)
         {
             drv.step(drv.slip() + v2*dt, dt);
             const scalar d = drv.slip() - s0;
-            const scalar fEx = 1 + M*std::log(1 + (v2/v1 - 1)*std::exp(-d/D0));
-            const scalar vp = drv.state().slipRate;
-            errF = max(errF, mag(lub.f(v2, drv.state().contactAge) - fEx));
-            const scalar fNum = lub.f(vp, drv.state().contactAge);
-            scalar m0, dm0;
-            lub.mu0(vp, m0, dm0);
-            errT = max(errT, mag(drv.last().tT.x() - fNum*m0*p)/(m0*p));
+            const scalar e = std::exp(-d/D0);
+            const scalar thetaEx = D0/v2 + (D0/v1 - D0/v2)*e;
+            const scalar fEx = 1 + M*std::log(1 + (v2/v1 - 1)*e);
+            const scalar theta =
+                law->stateLayout().value(drv.state(), "contactAge");
+            errTheta = max(errTheta, mag(theta - thetaEx)/thetaEx);
+            errT = max(errT, mag(drv.last().tT.x() - fEx*m0*p)/(m0*p));
         }
         // The sliding rate follows the prescribed step within the elastic
-        // slip mu tN/KT = 1e-3 D0: f within 1e-4 of the rigid-contact formula
-        unitTest::checkBelow("max |f - exact|", errF, 1e-4);
+        // slip mu tN/KT = 1e-3 D0 (KT = 1e16): the rigid-contact solution
+        // to within that (measured 1.3e-4 in theta, 1.7e-5 in tT)
+        unitTest::checkBelow("max |theta - exact|/theta", errTheta, 1e-3);
         unitTest::checkBelow
         (
-            "alpha = 0: tT = f mu0 tN exactly while sliding (rel)", errT, 1e-12
+            "alpha = 0: max |tT - f mu0 tN|/(mu0 tN), f exact", errT, 1e-4
         );
     }
 
@@ -120,7 +124,7 @@ int main()
         {
             frictionPointDriver drv(*law, p);
             for (label i = 0; i < 10; ++i) drv.step(0, holds[h]/10);
-            theta[h] = drv.state().contactAge;
+            theta[h] = law->stateLayout().value(drv.state(), "contactAge");
             const scalar dt = 0.002*D0/v;
             peak[h] = 0;
             for (label i = 0; i < 2000; ++i)
@@ -170,7 +174,7 @@ int main()
         vector t1(0.8, -0.6, 0); t1 -= (t1 & n)*n; t1 /= mag(t1);
         const vector t2 = n ^ t1;
         frictionState old = law->initialState();
-        old.contactAge = 2e-3;
+        law->stateLayout().setValue(old, "contactAge", 2e-3);
         old.totalSlip = 1e-6*t1;
         old.plasticSlip = 0.2e-6*t1;
         frictionInput in;
@@ -189,21 +193,68 @@ int main()
         unitTest::checkBelow("tangent vs FD (stick)", frictionTest::tangentError(*law, old, in, 1e-5), 1e-6);
     }
 
-    Info<< "Rate sensitivity a_eff and input checks" << endl;
+    Info<< "Instantaneous rate sensitivity [F21] and input checks" << endl;
     {
         autoPtr<frictionLaw> law = frictionTest::law(pear("1e13", stribeck));
         const auto& lub =
             dynamic_cast<const frictionLaws::lubricatedRateState&>(*law);
-        scalar vAt;
-        const scalar aMin = lub.minRateSensitivity(1e-6, 1, vAt);
-        // a_eff = M mu_d + (mu_s - mu_d) e^-x (M - x), x = v/v_c: minimum
-        // at x = 1 + M, value M mu_d - (mu_s - mu_d) e^-(1+M)
+
+        // d tT/d ln v at steady sliding (f = 1, theta = D0/v) against
+        // tN [(1-alpha)(M mu0 + v mu0') + alpha(1-alpha)(eta_b v/tN - mu0)
+        // + alpha eta_b v/tN], v alpha' = alpha (1 - alpha) (Stribeck n = 1)
+        scalar err = 0;
+        for (const scalar tN : {1e6, 1e8, 1e9})
+        {
+            for (const scalar v : {1e-6, 1e-4, 1e-3, 3e-3, 0.1})
+            {
+                scalar m0, dm0, al, dal;
+                lub.mu0(v, m0, dm0);
+                lub.lubrication().alpha(v, al, dal);
+                // with the creep regularisation [F17]: f_ss = 1 + M/2
+                // ln(1 + V_s^2/v^2), v df/dv = M v^2/(v^2 + V_s^2)
+                const scalar Vs2 = 1e-18;
+                const scalar f = 1 + 0.5*M*std::log1p(Vs2/(v*v));
+                const scalar Mv = M*v*v/(v*v + Vs2);
+                const scalar eta = 3e9*v/tN;
+                const scalar expected = tN*
+                (
+                    (1 - al)*(Mv*m0 + f*v*dm0) + al*(1 - al)*(eta - f*m0)
+                  + al*eta
+                );
+                frictionLaw::rateStates x(scalar(0));
+                law->steadyRateStates(v, tN, x);
+                err = max
+                (
+                    err, mag(law->rateSensitivity(v, x, tN) - expected)
+                   /(m0*tN + 3e9*v)
+                );
+            }
+        }
+        // central differences in ln v (truncation ~1e-9)
+        unitTest::checkBelow
+        (
+            "d tT/d ln v = the closed form, 15 (v, tN), / (mu0 tN + eta_b v)",
+            err, 2e-8
+        );
+
+        // alpha = 0: d tT/d ln v = tN a_eff, a_eff = M mu0 + v mu0'; with
+        // the exponential mu0 its minimum is M mu_d - (mu_s - mu_d) e^-(1+M)
+        // at v = (1 + M) v_c
+        autoPtr<frictionLaw> dry =
+            frictionTest::law(pear("1e13", "type constant; alpha 0;"));
+        const frictionLaw::sensitivitySummary s =
+            dry->steadySensitivity(1e-6, 1, p, p);
         unitTest::checkRel
         (
-            "a_eff min (pear set) at v = (1 + M) v_c",
-            aMin, 0.1*0.1 - 0.05*std::exp(-1.1), 1e-3
+            "alpha = 0: min d tT/d ln v = tN (M mu_d - (mu_s - mu_d) e^-(1+M))",
+            s.minimum, p*(0.1*0.1 - 0.05*std::exp(-1.1)), 1e-3
         );
-        unitTest::checkTrue("pear set flagged ill-posed", lub.checkRateSensitivity(1e-6, 1));
+        unitTest::checkRel("... at v = (1 + M) v_c", s.vAtMin, 1.1e-3, 0.02);
+        unitTest::checkTrue
+        (
+            "pear set flagged ill posed",
+            law->checkWellPosedness(1e-6, 1, 1e6, 1e9)
+        );
         autoPtr<frictionLaw> ok = frictionTest::law
         (
             "type lubricatedRateState; KN 1e13; KT 1e13; M 0.1; D0 1e-6;"
@@ -212,9 +263,8 @@ int main()
         );
         unitTest::checkTrue
         (
-            "constant mu0: a_eff > 0, no warning",
-            !dynamic_cast<const frictionLaws::lubricatedRateState&>(*ok)
-                .checkRateSensitivity(1e-9, 1)
+            "constant mu0 and alpha: no warning",
+            !ok->checkWellPosedness(1e-9, 1, 1e6, 1e9)
         );
 
         bool threw = false;

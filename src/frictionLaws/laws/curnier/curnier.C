@@ -13,6 +13,7 @@ License
 #include "curnier.H"
 #include "frictionParameters.H"
 #include "addToRunTimeSelectionTable.H"
+#include "dimensionSets.H"
 
 namespace Foam
 {
@@ -38,6 +39,18 @@ Foam::frictionLaws::curnier::curnier(const dictionary& dict)
     b_(1),
     direction1_(1, 0, 0)
 {
+    // [F25]: DS_T since the contact formed (tear force), DS_N while open
+    layout_.add
+    (
+        "tearSlip", frictionStateEntry::VECTOR, tearSlot, dimLength, true,
+        false
+    );
+    layout_.add
+    (
+        "normalSlip", frictionStateEntry::SCALAR, normalSlipSlot, dimLength,
+        true, false
+    );
+
     const word crit(dict.get<word>("criterion"));
     if (crit == "coulomb")
     {
@@ -116,17 +129,17 @@ void Foam::frictionLaws::curnier::update
     if (!normalContact(in, out))
     {
         openContact(old, in, out);
-        out.state.tearSlip = Zero;
-        out.state.normalSlip = -in.gN;      // separation, [F26]
+        out.state.vectors[tearSlot] = Zero;
+        out.state.scalars[normalSlipSlot] = -in.gN;     // separation, [F26]
         return;
     }
 
     out.state = old;
-    out.state.normalSlip = 0;               // no lift-off in compression
+    out.state.scalars[normalSlipSlot] = 0;  // no lift-off in compression
 
     const scalar tN = out.tN;
     const tensor P = projector(in.n);
-    const vector X = QT_*(P & old.tearSlip);                   // [F10]
+    const vector X = QT_*(P & old.vectors[tearSlot]);          // [F10]
     const vector xiTrial = KT_*(P & (in.gT - old.plasticSlip)) - X;  // [F3]
     const scalar Dc = old.cumulatedSlip;
     const scalar fKN = f_*KN_;
@@ -160,7 +173,7 @@ void Foam::frictionLaws::curnier::update
     }
 
     setFromReturn(old, in, rr, out);
-    out.state.tearSlip = old.tearSlip + rr.dg*rr.m;
+    out.state.vectors[tearSlot] = old.vectors[tearSlot] + rr.dg*rr.m;
     out.state.slipRate = in.dt > 0 ? rr.dg/in.dt : 0;
 }
 

@@ -14,6 +14,7 @@ License
 #include "relaxationStep.H"
 #include "frictionParameters.H"
 #include "addToRunTimeSelectionTable.H"
+#include "dimensionSets.H"
 
 namespace Foam
 {
@@ -38,6 +39,7 @@ Foam::frictionLaws::lubricatedRateState::lubricatedRateState
     muD_(0),
     vc_(1),
     etaB_(frictionParameters::nonNegative(dict, "filmViscosity")),
+    Df_(frictionParameters::nonNegative(dict, "filmMemoryDistance", 0)),
     steadyFreshContact_(false),
     lubrication_(lubricationWeightModel::New(dict.subDict("lubrication")))
 {
@@ -64,17 +66,26 @@ Foam::frictionLaws::lubricatedRateState::lubricatedRateState
             << " got '" << fresh << "'" << exit(FatalIOError);
     }
 
-    scalarList range
+    // The lubrication weight is a state variable with a film memory
+    // [F30] (written for restart), an output of the rate otherwise
+    layout_.add
     (
-        dict.getOrDefault<scalarList>("slipRateRange", scalarList({Vs_, 1}))
+        "contactAge", frictionStateEntry::SCALAR, thetaSlot, dimTime, true,
+        true
     );
-    if (range.size() != 2 || !(range[0] > 0) || !(range[1] > range[0]))
-    {
-        FatalIOErrorInFunction(dict)
-            << "keyword 'slipRateRange' must be (vMin vMax) with"
-            << " 0 < vMin < vMax, got " << range << exit(FatalIOError);
-    }
-    checkRateSensitivity(range[0], range[1]);
+    layout_.add
+    (
+        "lubricationWeight", frictionStateEntry::SCALAR, alphaSlot, dimless,
+        Df_ > 0, true
+    );
+
+    // Well-posedness at input time [F21], on the rates and pressures the
+    // case declares (defaults: creep velocity to 1 m/s, 1 MPa to 1 GPa)
+    const Pair<scalar> v =
+        frictionParameters::range(dict, "slipRateRange", {Vs_, 1});
+    const Pair<scalar> p =
+        frictionParameters::range(dict, "contactPressureRange", {1e6, 1e9});
+    checkWellPosedness(v.first(), v.second(), p.first(), p.second());
 }
 
 
@@ -100,64 +111,32 @@ void Foam::frictionLaws::lubricatedRateState::mu0
 }
 
 
-Foam::scalar Foam::frictionLaws::lubricatedRateState::f
+void Foam::frictionLaws::lubricatedRateState::slidingThreshold
 (
-    const scalar v,
-    const scalar theta
+    const scalar vp,
+    const scalar theta,
+    const scalar tN,
+    scalar& Y,
+    scalar& dYdvp,
+    scalar& dYdtheta
 ) const
 {
-    // [F17]
-    return max(1 + 0.5*M_*std::log(theta*theta*(v*v + Vs_*Vs_)/(D0_*D0_)), 0);
-}
-
-
-Foam::scalar Foam::frictionLaws::lubricatedRateState::minRateSensitivity
-(
-    const scalar vMin,
-    const scalar vMax,
-    scalar& vAtMin
-) const
-{
-    const label nSample = 400;
-    scalar aMin = GREAT;
-    vAtMin = vMin;
-    for (label i = 0; i <= nSample; ++i)
+    // Y = f mu0 tN with f = 1 + M ln(theta v_eff/D0) cut at zero [F17],
+    // v_eff = sqrt(v_p^2 + V_s^2), mu0(v_p) [F18]
+    const scalar veff2 = vp*vp + Vs_*Vs_;
+    const scalar f = 1 + 0.5*M_*std::log(theta*theta*veff2/(D0_*D0_));
+    if (f <= 0)
     {
-        const scalar v =
-            vMin*std::pow(vMax/vMin, scalar(i)/nSample);
-        scalar m, dm;
-        mu0(v, m, dm);
-        const scalar aEff = M_*m + v*dm;
-        if (aEff < aMin)
-        {
-            aMin = aEff;
-            vAtMin = v;
-        }
+        Y = 0;
+        dYdvp = 0;
+        dYdtheta = 0;
+        return;
     }
-    return aMin;
-}
-
-
-bool Foam::frictionLaws::lubricatedRateState::checkRateSensitivity
-(
-    const scalar vMin,
-    const scalar vMax
-) const
-{
-    scalar vAt;
-    const scalar aMin = minRateSensitivity(vMin, vMax, vAt);
-    if (aMin < 0)
-    {
-        WarningInFunction
-            << "lubricatedRateState: the rate sensitivity a_eff = M mu0"
-            << " + |v| mu0'(|v|) is negative (min " << aMin << " at |v| = "
-            << vAt << " m/s) in the slip-rate range [" << vMin << ", "
-            << vMax << "] m/s: sliding is ill-posed there (strain"
-            << " localisation, mesh-dependent results). Increase M or v_c,"
-            << " or reduce mu_s - mu_d." << endl;
-        return true;
-    }
-    return false;
+    scalar m0, dm0dvp;
+    mu0(vp, m0, dm0dvp);
+    Y = f*m0*tN;
+    dYdvp = (M_*vp/veff2*m0 + f*dm0dvp)*tN;
+    dYdtheta = M_/theta*m0*tN;
 }
 
 
@@ -165,7 +144,13 @@ Foam::frictionState
 Foam::frictionLaws::lubricatedRateState::initialState() const
 {
     frictionState s;
-    s.contactAge = D0_/Vs_;
+    s.scalars[thetaSlot] = D0_/Vs_;
+    if (Df_ > 0)
+    {
+        // [F30]: a fresh contact's film as in creep at V_s
+        scalar da;
+        lubrication_->alpha(Vs_, s.scalars[alphaSlot], da);
+    }
     return s;
 }
 
@@ -181,7 +166,7 @@ void Foam::frictionLaws::lubricatedRateState::contactAge
 {
     // Age at the start of the step: a face closing now starts in steady
     // sliding at its first slip rate with steadySliding [F17b]
-    scalar theta0 = old.contactAge;
+    scalar theta0 = old.scalars[thetaSlot];
     scalar dtheta0dvp = 0;
     if (steadyFreshContact_ && old.status == frictionState::OPEN)
     {
@@ -195,6 +180,34 @@ void Foam::frictionLaws::lubricatedRateState::contactAge
     scalar dtheta1dx;
     relaxationStep(theta0, x, dt, theta1, dtheta1dx);
     dtheta1dvp = dtheta1dx*dt/D0_ + std::exp(-x)*dtheta0dvp;
+}
+
+
+void Foam::frictionLaws::lubricatedRateState::lubricationWeight
+(
+    const frictionState& old,
+    const scalar v,
+    const scalar dt,
+    scalar& alpha,
+    scalar& dalphadv
+) const
+{
+    scalar aSs, daSs;
+    lubrication_->alpha(v, aSs, daSs);
+    if (Df_ <= 0 || (steadyFreshContact_ && old.status == frictionState::OPEN))
+    {
+        // [F19]; a fresh contact with steadySliding starts at alpha_ss
+        alpha = aSs;
+        dalphadv = daSs;
+        return;
+    }
+
+    // [F30]: exact step of d alpha/dt = -(v/D_f)(alpha - alpha_ss(v)) at
+    // constant v
+    const scalar a0 = old.scalars[alphaSlot];
+    const scalar e = std::exp(-v*dt/Df_);
+    alpha = aSs + (a0 - aSs)*e;
+    dalphadv = daSs*(1 - e) - (a0 - aSs)*e*dt/Df_;
 }
 
 
@@ -223,26 +236,11 @@ void Foam::frictionLaws::lubricatedRateState::update
     auto threshold = [&](scalar dg, slipThreshold& thr)
     {
         const scalar vp = dg/dt;
-        scalar theta1, dtheta1dvp;
+        scalar theta1, dtheta1dvp, dYdvp, dYdtheta;
         contactAge(old, vp, dt, theta1, dtheta1dvp);
-        const scalar veff2 = vp*vp + Vs_*Vs_;
-        const scalar fRaw =
-            1 + 0.5*M_*std::log(theta1*theta1*veff2/(D0_*D0_));
-        scalar m0, dm0dvp;
-        mu0(vp, m0, dm0dvp);
-        if (fRaw > 0)
-        {
-            const scalar dfdvp = M_*(dtheta1dvp/theta1 + vp/veff2);
-            thr.Y = fRaw*m0*tN;
-            thr.dYdDg = tN*(dfdvp*m0 + fRaw*dm0dvp)/dt;
-            thr.dYdgN = fRaw*m0*KN;
-        }
-        else
-        {
-            thr.Y = 0;
-            thr.dYdDg = 0;
-            thr.dYdgN = 0;
-        }
+        slidingThreshold(vp, theta1, tN, thr.Y, dYdvp, dYdtheta);
+        thr.dYdDg = (dYdvp + dYdtheta*dtheta1dvp)/dt;
+        thr.dYdgN = thr.Y/tN*KN;
         thr.dYdgT = Zero;
     };
 
@@ -266,18 +264,90 @@ void Foam::frictionLaws::lubricatedRateState::update
     const scalar v = mag(vv);
     const vector vHat = v > 0 ? vv/v : vector::zero;
     scalar alpha, dalphadv;
-    lubrication_->alpha(v, alpha, dalphadv);
+    lubricationWeight(old, v, dt, alpha, dalphadv);
     const vector viscous = etaB_*vv;
-    out.tT = (1 - alpha)*rr.F + alpha*viscous;
+    out.tT = blend(alpha, rr.F, viscous);
     out.dtTdgT =
         (1 - alpha)*rr.dFdgT
       + ((viscous - rr.F)*(dalphadv/dt*vHat))
       + (alpha*etaB_/dt)*P;
     out.dtTdgN = (1 - alpha)*rr.dFdgN;
 
-    out.state.contactAge = theta1;
-    out.state.lubricationWeight = alpha;
+    out.state.scalars[thetaSlot] = theta1;
+    out.state.scalars[alphaSlot] = alpha;
     out.state.slipRate = vp;
+}
+
+
+// * * * * * * * * * * * * * * * * Rate form * * * * * * * * * * * * * * * //
+
+void Foam::frictionLaws::lubricatedRateState::steadyRateStates
+(
+    const scalar v,
+    const scalar,
+    rateStates& x
+) const
+{
+    // theta_ss = D0/v ([F29]), alpha_ss(v) [F30]
+    x[0] = D0_/v;
+    if (Df_ > 0)
+    {
+        scalar da;
+        lubrication_->alpha(v, x[1], da);
+    }
+}
+
+
+Foam::scalar Foam::frictionLaws::lubricatedRateState::slidingTraction
+(
+    const scalar v,
+    const rateStates& x,
+    const scalar tN
+) const
+{
+    // [F20] with the threshold of update(): (1 - alpha) f mu0 tN
+    // + alpha eta_b v
+    scalar Y, dYdv, dYdtheta, alpha, da;
+    slidingThreshold(v, x[0], tN, Y, dYdv, dYdtheta);
+    if (Df_ > 0)
+    {
+        alpha = x[1];
+    }
+    else
+    {
+        lubrication_->alpha(v, alpha, da);
+    }
+    return blend(alpha, Y, etaB_*v);
+}
+
+
+void Foam::frictionLaws::lubricatedRateState::stateRates
+(
+    const scalar v,
+    const rateStates& x,
+    const scalar,
+    rateStates& xdot
+) const
+{
+    // [F29], [F30]
+    xdot[0] = 1 - x[0]*v/D0_;
+    if (Df_ > 0)
+    {
+        scalar aSs, da;
+        lubrication_->alpha(v, aSs, da);
+        xdot[1] = -v/Df_*(x[1] - aSs);
+    }
+}
+
+
+void Foam::frictionLaws::lubricatedRateState::rateStatesOf
+(
+    const frictionState& s,
+    rateStates& x
+) const
+{
+    x[0] = s.scalars[thetaSlot];
+    x[1] = s.scalars[alphaSlot];
 }
 
 

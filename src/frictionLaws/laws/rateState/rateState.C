@@ -53,6 +53,12 @@ Foam::frictionLaws::rateState::rateState(const dictionary& dict)
     const scalar v0 =
         frictionParameters::positive(dict, "initialSlipRate", VStar_);
     phiInit_ = stateLaw_->steadyState(v0);
+
+    layout_.add
+    (
+        stateLaw_->stateName(), frictionStateEntry::SCALAR, phiSlot,
+        stateLaw_->stateDimensions(), true, true, stateLaw_->oldStateName()
+    );
 }
 
 
@@ -98,18 +104,56 @@ void Foam::frictionLaws::rateState::mu
 }
 
 
-Foam::scalar Foam::frictionLaws::rateState::muSteady(const scalar v) const
+void Foam::frictionLaws::rateState::steadyRateStates
+(
+    const scalar v,
+    const scalar,
+    rateStates& x
+) const
 {
-    scalar m, d1, d2;
-    mu(v, stateLaw_->steadyState(v), m, d1, d2);
-    return m;
+    x[0] = stateLaw_->steadyState(v);
+}
+
+
+Foam::scalar Foam::frictionLaws::rateState::slidingTraction
+(
+    const scalar v,
+    const rateStates& x,
+    const scalar tN
+) const
+{
+    scalar m, dmdv, dmdlnphi;
+    mu(v, x[0], m, dmdv, dmdlnphi);
+    return max(m, scalar(0))*tN;
+}
+
+
+void Foam::frictionLaws::rateState::stateRates
+(
+    const scalar v,
+    const rateStates& x,
+    const scalar,
+    rateStates& xdot
+) const
+{
+    xdot[0] = stateLaw_->rate(x[0], v);
+}
+
+
+void Foam::frictionLaws::rateState::rateStatesOf
+(
+    const frictionState& s,
+    rateStates& x
+) const
+{
+    x[0] = s.scalars[phiSlot];
 }
 
 
 Foam::frictionState Foam::frictionLaws::rateState::initialState() const
 {
     frictionState s;
-    s.contactAge = phiInit_;
+    s.scalars[phiSlot] = phiInit_;
     return s;
 }
 
@@ -134,7 +178,7 @@ void Foam::frictionLaws::rateState::update
     const scalar KN = KN_;
     const tensor P = projector(in.n);
     const vector xiTrial = KT_*(P & (in.gT - old.plasticSlip));      // [F3]
-    const scalar phi0 = old.contactAge;
+    const scalar phi0 = old.scalars[phiSlot];
     const frictionStateLaw& sl = *stateLaw_;
 
     // Threshold at slip increment dg: v = dg/dt, phi_{n+1}(v), mu(v, phi)
@@ -172,9 +216,8 @@ void Foam::frictionLaws::rateState::update
     const scalar v = rr.dg/dt;
     scalar phi1, dphi1dv;
     sl.evolve(phi0, v, dt, phi1, dphi1dv);
-    out.state.contactAge = phi1;
+    out.state.scalars[phiSlot] = phi1;
     out.state.slipRate = v;
-    out.state.lubricationWeight = 0;
 }
 
 // ************************************************************************* //

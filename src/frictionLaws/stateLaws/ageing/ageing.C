@@ -54,9 +54,14 @@ Foam::scalar Foam::frictionStateLaws::ageing::steadyState(const scalar v) const
 }
 
 
-Foam::scalar Foam::frictionStateLaws::ageing::Gphi(const scalar v) const
+Foam::scalar Foam::frictionStateLaws::ageing::rate
+(
+    const scalar phi,
+    const scalar v
+) const
 {
-    return v/L_;
+    // [F27]
+    return 1 - v*phi/L_;
 }
 
 // ************************************************************************* //

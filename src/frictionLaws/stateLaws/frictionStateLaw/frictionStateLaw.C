@@ -13,6 +13,7 @@ License
 #include "frictionStateLaw.H"
 #include "frictionParameters.H"
 #include "error.H"
+#include "dimensionSets.H"
 
 namespace Foam
 {
@@ -25,6 +26,13 @@ Foam::frictionStateLaw::frictionStateLaw(const dictionary& dict)
 :
     VStar_(frictionParameters::positive(dict, "VStar"))
 {}
+
+
+Foam::dimensionSet Foam::frictionStateLaw::stateDimensions() const
+{
+    // phi of the ageing and slip laws: the mean age of the contacts [F11]
+    return dimTime;
+}
 
 
 Foam::autoPtr<Foam::frictionStateLaw> Foam::frictionStateLaw::New

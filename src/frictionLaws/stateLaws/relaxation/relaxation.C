@@ -14,6 +14,7 @@ License
 #include "relaxationStep.H"
 #include "frictionParameters.H"
 #include "addToRunTimeSelectionTable.H"
+#include "dimensionSets.H"
 
 namespace Foam
 {
@@ -93,10 +94,20 @@ Foam::scalar Foam::frictionStateLaws::relaxation::steadyState
 }
 
 
-Foam::scalar Foam::frictionStateLaws::relaxation::Gphi(const scalar v) const
+Foam::scalar Foam::frictionStateLaws::relaxation::rate
+(
+    const scalar phi,
+    const scalar v
+) const
 {
-    // [F22b] for the relaxation law: G_phi = 1/(t** phi_ss)
-    return 1/(tRelax_*steadyState(v));
+    // [F27]: -(phi - phi_ss)/(t** phi_ss)
+    return (1 - phi/steadyState(v))/tRelax_;
+}
+
+
+Foam::dimensionSet Foam::frictionStateLaws::relaxation::stateDimensions() const
+{
+    return dimless;
 }
 
 // ************************************************************************* //

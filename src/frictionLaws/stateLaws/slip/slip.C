@@ -57,10 +57,15 @@ Foam::scalar Foam::frictionStateLaws::slip::steadyState(const scalar v) const
 }
 
 
-Foam::scalar Foam::frictionStateLaws::slip::Gphi(const scalar v) const
+Foam::scalar Foam::frictionStateLaws::slip::rate
+(
+    const scalar phi,
+    const scalar v
+) const
 {
-    // d/dphi [(v phi/L) ln(v phi/L)] at phi = L/v
-    return v/L_;
+    // [F27]; no change in a hold (v phi ln(v phi) -> 0)
+    const scalar y = v*phi/L_;
+    return y > 0 ? -y*std::log(y) : 0;
 }
 
 // ************************************************************************* //

@@ -97,6 +97,20 @@ bool Foam::rigidObstacles::cylinderObstacle::nearestInitial
     cp.gap = gap;
     cp.hint = -1;
 
+    // [C6] the radial direction turns with x: d(radial)/dx =
+    // (I - a a - r r)/rho, the curvature seen from x
+    if (rho > SMALL*radius_)
+    {
+        const tensor Pt(tensor::I - sqr(axis_) - sqr(radial));
+        cp.dndx = (inside_ ? -1 : 1)*Pt/rho;
+        cp.dpdx = sqr(axis_) + (radius_/rho)*Pt;
+    }
+    else
+    {
+        cp.dndx = Zero;
+        cp.dpdx = sqr(axis_);
+    }
+
     return true;
 }
 

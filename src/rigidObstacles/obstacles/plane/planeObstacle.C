@@ -54,6 +54,8 @@ bool Foam::rigidObstacles::planeObstacle::nearestInitial
     cp.n = normal_;
     cp.gap = gap;
     cp.hint = -1;
+    cp.dndx = Zero;
+    cp.dpdx = tensor::I - sqr(normal_);
 
     return true;
 }

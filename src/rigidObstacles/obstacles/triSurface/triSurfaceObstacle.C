@@ -171,6 +171,23 @@ bool Foam::rigidObstacles::triSurfaceObstacle::evaluate
 
     vector n = faceNormals_[f];
 
+    // [C6] how the nearest point moves with x0: in the triangle's plane
+    // inside it, along the edge on an edge, not at a vertex
+    tensor dpdx(Zero);
+    if (nearType == triPointRef::NONE)
+    {
+        dpdx = tensor::I - sqr(faceNormals_[f]);
+    }
+    else if (nearType == triPointRef::EDGE)
+    {
+        const vector e
+        (
+            pts[tri[(nearLabel + 1) % 3]] - pts[tri[nearLabel]]
+        );
+        dpdx = sqr(e/mag(e));
+    }
+    tensor dndx(Zero);
+
     if
     (
         normalModel_ == normalModel::nearest
@@ -180,6 +197,9 @@ bool Foam::rigidObstacles::triSurfaceObstacle::evaluate
         if (dist > smallDistance_)
         {
             n = ((d & pseudo) >= 0 ? d : -d)/dist;
+            // n = +-(x - p)/|x - p| turns with x unless x moves along it
+            dndx = ((d & pseudo) >= 0 ? 1 : -1)
+               *((tensor::I - sqr(d/dist)) & (tensor::I - dpdx))/dist;
         }
         else if (mag(pseudo) > VSMALL)
         {
@@ -196,9 +216,23 @@ bool Foam::rigidObstacles::triSurfaceObstacle::evaluate
         if (m > VSMALL)
         {
             n = ns/m;
+            // barycentric gradients (b - c) x nt/(2 A), ... in the plane
+            // (nt the triangle's own unit normal, whatever the flip)
+            const vector nt(t.areaNormal()/mag(t.areaNormal()));
+            const scalar twoA = 2*mag(t.areaNormal());
+            tensor dns(Zero);
+            for (label k = 0; k < 3; ++k)
+            {
+                const point& b = pts[tri[(k + 1) % 3]];
+                const point& c = pts[tri[(k + 2) % 3]];
+                dns += cn[k]*(((b - c) ^ nt)/twoA);
+            }
+            dndx = ((tensor::I - sqr(n)) & dns & dpdx)/m;
         }
     }
 
+    cp.dndx = dndx;
+    cp.dpdx = dpdx;
     cp.p = p;
     cp.n = n;
     cp.gap = d & n;

@@ -189,14 +189,45 @@ Foam::vector Foam::solidTractionFvPatchVectorField::foundationTraction
 }
 
 
-bool Foam::solidTractionFvPatchVectorField::stiffness
+void Foam::solidTractionFvPatchVectorField::tangent
 (
     const solidPatchKinematics& k,
-    tensorField& K
+    List<faceForceTangent>& df
 ) const
 {
-    K = (foundationStiffness_*mag(k.Sf0))*tensor(sqr(foundationDirection_));
-    return foundationStiffness_ > 0;
+    df.setSize(k.F.size());
+    df = faceForceTangent();
+
+    if (!pressure_.valid() || !followerPressure_)
+    {
+        return;
+    }
+
+    // [S21] the follower force -p a, a = J F^-T . S0 (Nanson):
+    // da_i/dF_kl = a_i F^-T_kl - a_k F^-T_il
+    const scalar p = pressure_->value(k.time);
+    forAll(df, facei)
+    {
+        const tensor& F = k.F[facei];
+        const tensor FinvT(inv(F).T());
+        const vector a(det(F)*(FinvT & k.Sf0[facei]));
+        for (direction i = 0; i < 3; ++i)
+        {
+            df[facei].dfdF[i] = -p*(a[i]*FinvT - a*FinvT.row(i));
+        }
+    }
+}
+
+
+void Foam::solidTractionFvPatchVectorField::meanDisplacementTangent
+(
+    const solidPatchKinematics& k,
+    tensorField& dfdMean
+) const
+{
+    // [S12b] f_i = -|S0_i| k (e e) . <D>
+    dfdMean = (-foundationStiffness_*mag(k.Sf0))
+       *tensor(sqr(foundationDirection_));
 }
 
 

@@ -107,15 +107,20 @@ bool Foam::blockSparseMatrix::local() const
 }
 
 
-Eigen::SparseMatrix<double> Foam::blockSparseMatrix::eigenMatrix() const
+Eigen::SparseMatrix<double> Foam::blockSparseMatrix::localBlock() const
 {
     const label lo = cellNumbering_.offset(Pstream::myProcNo());
+    const label hi = lo + nRows();
     std::vector<Eigen::Triplet<double>> entries;
     entries.reserve(values_.size());
     for (label r = 0; r < nRows(); ++r)
     {
         for (label s = rowStart_[r]; s < rowStart_[r + 1]; ++s)
         {
+            if (colCells_[s] < lo || colCells_[s] >= hi)
+            {
+                continue;
+            }
             const label c = colCells_[s] - lo;
             for (label a = 0; a < nc_; ++a)
             {
@@ -133,6 +138,19 @@ Eigen::SparseMatrix<double> Foam::blockSparseMatrix::eigenMatrix() const
     A.setFromTriplets(entries.begin(), entries.end());
     A.makeCompressed();
     return A;
+}
+
+
+Eigen::SparseMatrix<double> Foam::blockSparseMatrix::eigenMatrix() const
+{
+    if (!local())
+    {
+        FatalErrorInFunction
+            << "The matrix couples to other processors' cells: it has no"
+            << " serial Eigen form (use localBlock() for block Jacobi)"
+            << abort(FatalError);
+    }
+    return localBlock();
 }
 
 

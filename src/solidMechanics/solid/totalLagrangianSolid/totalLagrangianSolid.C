@@ -4,10 +4,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "totalLagrangianSolid.H"
-#include "emptyFvPatch.H"
-#include "symmetryPlaneFvPatch.H"
-#include "symmetryFvPatch.H"
-#include "wedgeFvPatch.H"
+#include "calculatedFvPatchFields.H"
+#include "cpuTime.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -17,473 +15,45 @@ namespace Foam
 }
 
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-namespace Foam
+Foam::tmp<Foam::volVectorField>
+Foam::totalLagrangianSolid::previousDisplacement(const volVectorField& D)
 {
+    IOobject io
+    (
+        "Dprevious",
+        D.time().timeName(),
+        D.mesh(),
+        IOobject::READ_IF_PRESENT,
+        IOobject::AUTO_WRITE
+    );
+    if (io.typeHeaderOk<volVectorField>())
+    {
+        return tmp<volVectorField>::New(io, D.mesh());
+    }
+    // plain values: D's force patches (contact state) are not repeated
+    return tmp<volVectorField>::New
+    (
+        io, D, calculatedFvPatchVectorField::typeName
+    );
+}
 
-//- Solved components of a (possibly 2-D) mesh
-static labelList solvedComponents(const fvMesh& mesh)
+
+Foam::labelList Foam::totalLagrangianSolid::solvedComponents
+(
+    const fvMesh& mesh
+)
 {
     labelList comps;
     for (direction d = 0; d < vector::nComponents; ++d)
     {
-        if (mesh.solutionD()[d] == 1)
+        if (mesh.geometricD()[d] == 1)
         {
             comps.append(d);
         }
     }
     return comps;
-}
-
-
-//- History field read from the start time if written, else its initial
-//  value; written only when the law is plastic
-template<class Type>
-static tmp<GeometricField<Type, fvsPatchField, surfaceMesh>> historyField
-(
-    const fvMesh& mesh,
-    const word& name,
-    const Type& initial,
-    const bool write
-)
-{
-    IOobject io
-    (
-        name,
-        mesh.time().timeName(),
-        mesh,
-        IOobject::READ_IF_PRESENT,
-        write ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
-    );
-
-    if (io.typeHeaderOk<GeometricField<Type, fvsPatchField, surfaceMesh>>())
-    {
-        return tmp<GeometricField<Type, fvsPatchField, surfaceMesh>>::New
-        (
-            io, mesh
-        );
-    }
-
-    io.readOpt() = IOobject::NO_READ;
-    return tmp<GeometricField<Type, fvsPatchField, surfaceMesh>>::New
-    (
-        io,
-        mesh,
-        dimensioned<Type>(name, dimless, initial)
-    );
-}
-
-} // End namespace Foam
-
-
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-void Foam::totalLagrangianSolid::classifyPatches()
-{
-    const fvBoundaryMesh& patches = mesh_.boundary();
-    patchKinds_.setSize(patches.size());
-    forcePatches_.setSize(patches.size(), nullptr);
-
-    forAll(patches, patchi)
-    {
-        const fvPatch& p = patches[patchi];
-        fvPatchVectorField& pf = D_.boundaryFieldRef()[patchi];
-
-        if (isA<emptyFvPatch>(p))
-        {
-            patchKinds_[patchi] = EMPTY;
-        }
-        else if (p.coupled())
-        {
-            patchKinds_[patchi] = COUPLED;
-        }
-        else if (isA<symmetryPlaneFvPatch>(p) || isA<symmetryFvPatch>(p))
-        {
-            patchKinds_[patchi] = SYMMETRY;
-        }
-        else if (dynamic_cast<solidForceBoundary*>(&pf))
-        {
-            patchKinds_[patchi] = FORCE;
-            forcePatches_[patchi] = dynamic_cast<solidForceBoundary*>(&pf);
-        }
-        else if (pf.fixesValue())
-        {
-            patchKinds_[patchi] = FIXED;
-        }
-        else
-        {
-            FatalErrorInFunction
-                << "Patch " << p.name() << " of field D (file "
-                << D_.objectPath() << ") has boundary condition type '"
-                << pf.type() << "', which largeStrainSolidFoam does not"
-                << " support." << nl
-                << "Expected a fixed-value type (fixedValue,"
-                << " uniformFixedValue, ...), solidTraction,"
-                << " frictionalContact, or a symmetryPlane/symmetry, empty"
-                << " or processor patch" << nl
-                << exit(FatalError);
-        }
-    }
-}
-
-
-void Foam::totalLagrangianSolid::computeGradientWeights()
-{
-    // [S10] weighted least squares with weights 1/|d|^2 on the reference mesh
-    const labelUList& own = mesh_.owner();
-    const labelUList& nei = mesh_.neighbour();
-    const volVectorField& C = mesh_.C();
-
-    symmTensorField dd(mesh_.nCells(), Zero);
-
-    forAll(own, facei)
-    {
-        const vector d(C[nei[facei]] - C[own[facei]]);
-        const symmTensor wdd(sqr(d)/magSqr(d));
-        dd[own[facei]] += wdd;
-        dd[nei[facei]] += wdd;
-    }
-
-    List<vectorField> patchDelta(mesh_.boundary().size());
-
-    forAll(mesh_.boundary(), patchi)
-    {
-        const fvPatch& p = mesh_.boundary()[patchi];
-        const labelUList& fc = p.faceCells();
-        vectorField& delta = patchDelta[patchi];
-
-        switch (patchKinds_[patchi])
-        {
-            case FIXED:
-                delta = p.Cf() - p.Cn();
-                break;
-            case COUPLED:
-                delta = p.delta();
-                break;
-            case SYMMETRY:
-            {
-                // the mirror image of the cell across the plane
-                const vectorField n(p.nf());
-                delta = 2*((n & (p.Cf() - p.Cn()))*n);
-                break;
-            }
-            default:
-                continue;
-        }
-
-        forAll(fc, i)
-        {
-            dd[fc[i]] += sqr(delta[i])/magSqr(delta[i]);
-        }
-    }
-
-    // Empty directions of a 2-D mesh: unit diagonal keeps dd invertible
-    for (direction d = 0; d < vector::nComponents; ++d)
-    {
-        if (mesh_.solutionD()[d] != 1)
-        {
-            vector e(Zero);
-            e[d] = 1;
-            dd += sqr(e);
-        }
-    }
-
-    forAll(dd, celli)
-    {
-        const scalar scale = tr(dd[celli])/3;
-        if (det(dd[celli]) < 1e-10*pow3(scale))
-        {
-            FatalErrorInFunction
-                << "Cell " << celli << " at " << C[celli]
-                << " has too few neighbours for a least-squares gradient"
-                << " (its other faces carry tractions)." << nl
-                << "Refine the mesh so there are at least two cells across"
-                << " every traction-loaded wall" << nl << exit(FatalError);
-        }
-    }
-
-    const symmTensorField invDd(inv(dd));
-
-    ownLs_.setSize(own.size());
-    neiLs_.setSize(own.size());
-    forAll(own, facei)
-    {
-        const vector d(C[nei[facei]] - C[own[facei]]);
-        const vector wd(d/magSqr(d));
-        ownLs_[facei] = invDd[own[facei]] & wd;
-        neiLs_[facei] = invDd[nei[facei]] & wd;
-    }
-
-    patchLs_.setSize(mesh_.boundary().size());
-    forAll(mesh_.boundary(), patchi)
-    {
-        const labelUList& fc = mesh_.boundary()[patchi].faceCells();
-        const vectorField& delta = patchDelta[patchi];
-        vectorField& ls = patchLs_[patchi];
-        ls.setSize(delta.size());
-        forAll(delta, i)
-        {
-            ls[i] = invDd[fc[i]] & (delta[i]/magSqr(delta[i]));
-        }
-    }
-}
-
-
-void Foam::totalLagrangianSolid::assemblePreconditioner
-(
-    const bool withPatchStiffness,
-    const bool withMaterialTangent
-)
-{
-    // [S16] compact-stencil operator: a face passes the traction
-    // c A (D_N - D_P), c = |S|/|d|, with A the acoustic tensor of the law
-    // (elastic: mu I + (lambda + mu) n n; plastic: the consistent tangent's)
-    const mechanicalLaw& law = law_();
-    const scalar mu = law.mu();
-    const scalar lambda = law.lambda();
-    const labelUList& own = mesh_.owner();
-    const labelUList& nei = mesh_.neighbour();
-    const vectorField& Sf = mesh_.Sf();
-    const volVectorField& C = mesh_.C();
-
-    // With volume averaging the compact face stencil carries only the
-    // deviatoric part, mu I + mu/3 n n; the volumetric part acts through
-    // the cells' divergence and is added below as K V div^T div
-    const scalar lambdaCompact =
-        volumetricAveraging_ ? lambda - law.bulkModulus() : lambda;
-
-    auto faceStiffness = [&](const vector& S, const vector& d)
-    {
-        const scalar magS = mag(S);
-        const vector n(S/magS);
-        return (magS/mag(d))*(mu*tensor::I + (lambdaCompact + mu)*sqr(n));
-    };
-
-    precon_.clear();
-
-    scalar meanDiag = 0;
-
-    forAll(own, facei)
-    {
-        const vector d(C[nei[facei]] - C[own[facei]]);
-        tensor K;
-        if (withMaterialTangent)
-        {
-            materialState old;
-            old.CpInv = CpInv_[facei];
-            old.epsilonP = epsilonPf_[facei];
-            const scalar magS = mag(Sf[facei]);
-            K = (magS/mag(d))
-               *law.acousticTensor
-                (
-                    internalFaceDefGrad(facei), old, Sf[facei]/magS
-                );
-        }
-        else
-        {
-            K = faceStiffness(Sf[facei], d);
-        }
-        precon_.addCoupling(own[facei], nei[facei], K);
-        meanDiag += 2*tr(K);
-    }
-
-    forAll(mesh_.boundary(), patchi)
-    {
-        const fvPatch& p = mesh_.boundary()[patchi];
-        const labelUList& fc = p.faceCells();
-        const vectorField& S = p.Sf();
-
-        switch (patchKinds_[patchi])
-        {
-            case FIXED:
-            case COUPLED:
-            {
-                const vectorField d
-                (
-                    patchKinds_[patchi] == FIXED ? p.Cf() - p.Cn() : p.delta()
-                );
-                forAll(fc, i)
-                {
-                    precon_.addDiagonal(fc[i], faceStiffness(S[i], d[i]));
-                }
-                break;
-            }
-            case SYMMETRY:
-            {
-                const vectorField d(p.Cf() - p.Cn());
-                forAll(fc, i)
-                {
-                    const vector n(S[i]/mag(S[i]));
-                    precon_.addDiagonal
-                    (
-                        fc[i],
-                        (mag(S[i])/mag(d[i]))*(lambda + 2*mu)*sqr(n)
-                    );
-                }
-                break;
-            }
-            case FORCE:
-            {
-                if (!withPatchStiffness)
-                {
-                    break;
-                }
-                vectorField Dface;
-                tensorField F;
-                forcePatchKinematics(patchi, Dface, F);
-                const solidPatchKinematics k
-                {
-                    mesh_.Sf().boundaryField()[patchi],
-                    mesh_.Cf().boundaryField()[patchi],
-                    Dface, forcePatchD0_[patchi], F,
-                    mesh_.time().value(), mesh_.time().deltaTValue()
-                };
-                tensorField K(fc.size(), Zero);
-                if (forcePatches_[patchi]->stiffness(k, K))
-                {
-                    forAll(fc, i)
-                    {
-                        precon_.addDiagonal(fc[i], K[i]);
-                    }
-                }
-                break;
-            }
-            default:
-                break;
-        }
-    }
-
-    if (volumetricAveraging_)
-    {
-        addVolumetricStiffness();
-    }
-
-    const scalarField& V = mesh_.V();
-    const scalar nCells = max(mesh_.nCells(), 1);
-    meanDiag /= (nCells*vector::nComponents);
-
-    const scalar dt = mesh_.time().deltaTValue();
-    const scalar inertiaCoeff =
-        inertia_ ? 2*inertiaDensity_/(dt*(dt + deltaT0_)) : 0;
-
-    // A tiny diagonal shift keeps M definite when rigid-body modes are
-    // held only by the nonlinear boundary terms
-    forAll(V, celli)
-    {
-        precon_.addDiagonal
-        (
-            celli,
-            (inertiaCoeff*V[celli] + 1e-9*meanDiag)*tensor::I
-        );
-    }
-
-    if (!precon_.factorise())
-    {
-        FatalErrorInFunction
-            << "Factorisation of the preconditioner failed" << nl
-            << exit(FatalError);
-    }
-    preconDeltaT_ = dt;
-}
-
-
-Foam::labelListList Foam::totalLagrangianSolid::residualInfluence() const
-{
-    // The face stress uses the gradients of the two cells it joins, each
-    // built from their face neighbours: two hops
-    const labelListList& cc = mesh_.cellCells();
-    labelListList influence(mesh_.nCells());
-    labelHashSet set(32);
-    forAll(cc, celli)
-    {
-        set.clear();
-        set.insert(celli);
-        for (const label n1 : cc[celli])
-        {
-            set.insert(n1);
-            for (const label n2 : cc[n1])
-            {
-                set.insert(n2);
-            }
-        }
-        influence[celli] = set.sortedToc();
-    }
-    return influence;
-}
-
-
-void Foam::totalLagrangianSolid::addVolumetricStiffness()
-{
-    // [S16] K V_P b_Q b_R^T for every pair of cells Q, R in the
-    // least-squares divergence of cell P: div D_P = sum_Q b_Q . D_Q
-    const labelUList& own = mesh_.owner();
-    const labelUList& nei = mesh_.neighbour();
-    const cellList& cellFaces = mesh_.cells();
-    const scalarField& V = mesh_.V();
-    const scalar K = law_->bulkModulus();
-
-    DynamicList<label> cells(16);
-    DynamicList<vector> b(16);
-
-    forAll(cellFaces, P)
-    {
-        cells.clear();
-        b.clear();
-        cells.append(P);
-        b.append(Zero);
-
-        for (const label facei : cellFaces[P])
-        {
-            if (facei < mesh_.nInternalFaces())
-            {
-                const bool isOwner = own[facei] == P;
-                const vector& ls = isOwner ? ownLs_[facei] : neiLs_[facei];
-                // G_P += ls (D_N - D_P) for the owner, ls (D_N - D_P) with
-                // the face's N,P for the neighbour: sign by side
-                const label Q = isOwner ? nei[facei] : own[facei];
-                const scalar sign = isOwner ? 1 : -1;
-                cells.append(Q);
-                b.append(sign*ls);
-                b[0] -= sign*ls;
-            }
-            else
-            {
-                const label patchi =
-                    mesh_.boundaryMesh().whichPatch(facei);
-                const label i =
-                    facei - mesh_.boundaryMesh()[patchi].start();
-                const vector& ls = patchLs_[patchi][i];
-                switch (patchKinds_[patchi])
-                {
-                    case FIXED:
-                    case COUPLED:
-                        b[0] -= ls;
-                        break;
-                    case SYMMETRY:
-                    {
-                        const vector n
-                        (
-                            mesh_.boundary()[patchi].nf()()[i]
-                        );
-                        b[0] -= 2*(ls & n)*n;
-                        break;
-                    }
-                    default:
-                        break;
-                }
-            }
-        }
-
-        const scalar KV = K*V[P];
-        forAll(cells, q)
-        {
-            forAll(cells, r)
-            {
-                precon_.addBlock(cells[q], cells[r], KV*(b[q]*b[r]));
-            }
-        }
-    }
 }
 
 
@@ -553,207 +123,272 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
         ),
         mesh
     ),
-    Dwork_
-    (
-        IOobject("Dwork", mesh.time().timeName(), mesh),
-        D_,
-        calculatedFvPatchVectorField::typeName
-    ),
-    gradD_
-    (
-        IOobject("gradDwork", mesh.time().timeName(), mesh),
-        mesh,
-        dimensionedTensor(dimless, Zero)
-    ),
-    Jcell_(mesh.nCells(), 1),
-    volumetricAveraging_(true),
-    volumetricAveragingWeight_(1),
-    emptyProjector_(Zero),
-    CpInv_(historyField(mesh, "CpInv", symmTensor::I, law_->plastic())),
-    epsilonPf_(historyField(mesh, "epsilonPf", scalar(0), law_->plastic())),
+    Dprevious_(previousDisplacement(D_)),
+    bcs_(D_),
+    discretisation_(mechanicalProperties_, law_(), D_, bcs_),
     comps_(solvedComponents(mesh)),
-    inertia_(false),
-    inertiaDensity_(0),
-    D0_(D_.primitiveField()),
-    D00_(D_.primitiveField()),
-    deltaT0_(mesh.time().deltaTValue()),
-    precon_(mesh.nCells(), comps_),
-    preconDeltaT_(-1),
-    krylovRefresh_
+    jacobian_
     (
-        mesh.solutionDict().subDict("solid")
-       .lookupOrDefault<label>("krylovRefresh", 15)
+        discretisation_.jacobianPattern(),
+        comps_,
+        discretisation_.cellNumbering()
     ),
-    preconditionerType_
-    (
-        mesh.solutionDict().subDict("solid")
-       .lookupOrDefault<word>("preconditioner", "fdJacobian")
-    ),
-    forceScale_(0),
-    forceFloor_(0),
-    bodySize_(mag(mesh.bounds().span()))
+    linearSolver_(),
+    bodySize_(mag(mesh.bounds().span())),
+    checkStep_(1e-8)
 {
-    const word d2dt2
+    // Constructing from a tmp drops the write option
+    Dprevious_.writeOpt() = IOobject::AUTO_WRITE;
+
+    jacobian_.setCoordinates(mesh.C().primitiveField());
+
+    const dictionary& solidDict = mesh.solutionDict().subDict("solid");
+    linearSolver_ = linearSolver::New
     (
-        mesh.schemesDict().subDict("d2dt2Schemes").get<word>("default")
+        solidDict.subOrEmptyDict("linearSolver"), jacobian_
     );
-    if (d2dt2 == "Euler")
+    Info<< "    " << linearSolver_->description().c_str() << endl;
+
+    if (solidDict.lookupOrDefault<bool>("checkJacobian", false))
     {
-        inertia_ = true;
-    }
-    else if (d2dt2 != "steadyState")
-    {
-        FatalIOErrorInFunction(mesh.schemesDict())
-            << "Keyword 'default' in d2dt2Schemes of "
-            << mesh.schemesDict().name() << " is '" << d2dt2
-            << "'; expected steadyState (quasi-static) or Euler (inertia)"
-            << nl << exit(FatalIOError);
-    }
-    if (inertia_ && law_->rho() <= 0)
-    {
-        FatalIOErrorInFunction(mechanicalProperties_)
-            << "Keyword 'rho' in " << mechanicalProperties_.name()
-            << " must be > 0 when d2dt2Schemes is Euler" << nl
-            << exit(FatalIOError);
+        const label n = returnReduce(nDofs(), sumOp<label>());
+        if (n > 20000)
+        {
+            FatalIOErrorInFunction(solidDict)
+                << "Keyword 'checkJacobian' in dictionary " << solidDict.name()
+                << ": the finite-difference check costs two residual"
+                << " evaluations per unknown; " << n << " unknowns is more"
+                << " than the 20000 it is meant for" << nl
+                << exit(FatalIOError);
+        }
+        check_.reset(new jacobianCheck());
+
+        // Steps of 1e-8 of the body (strains near 1e-7): the truncation
+        // error is near 1e-14 for smooth laws, the plastic return
+        // mapping's tolerance (1e-14 of the stress) gives 1e-7. A law
+        // with a steep rate dependence (rate-and-state at slip increments
+        // of that order) needs smaller steps
+        checkStep_ =
+            solidDict.lookupOrDefault<scalar>("checkJacobianStep", 1e-8);
+        Info<< "    checkJacobian: every Jacobian is compared with central"
+            << " differences (" << n << " unknowns)" << endl;
     }
 
-    // [S13b] mass scaling: quasi-static forming runs with a heavier body so
-    // that the rate-dependent friction's instabilities resolve dynamically
-    const scalar massScaling =
-        mechanicalProperties_.lookupOrDefault<scalar>("massScaling", 1);
-    if (!(massScaling >= 1 && massScaling <= 1e12))
+    // The step before the written one: Dprevious if written (a restart
+    // with the same predictor and inertia as the uninterrupted run [S19]);
+    // a run written before Dprevious existed recovers it from the velocity
+    const scalar dt0 = mesh.time().deltaT0Value();
+    IOobject velIo
+    (
+        "V", mesh.time().timeName(), mesh, IOobject::READ_IF_PRESENT
+    );
+    IOobject previousIo
+    (
+        "Dprevious", mesh.time().timeName(), mesh, IOobject::READ_IF_PRESENT
+    );
+    if (previousIo.typeHeaderOk<volVectorField>())
     {
-        FatalIOErrorInFunction(mechanicalProperties_)
-            << "Keyword 'massScaling' in " << mechanicalProperties_.name()
-            << " is " << massScaling << "; expected a value in [1, 1e12]"
-            << nl << exit(FatalIOError);
+        discretisation_.setPreviousStep(Dprevious_.primitiveField(), dt0);
     }
-    if (inertia_)
+    else if (discretisation_.inertia() && velIo.typeHeaderOk<volVectorField>())
     {
-        inertiaDensity_ = massScaling*law_->rho();
-    }
-    else if (massScaling != 1)
-    {
-        IOWarningInFunction(mechanicalProperties_)
-            << "Keyword 'massScaling' in " << mechanicalProperties_.name()
-            << " has no effect: the run is quasi-static (d2dt2Schemes "
-            << "steadyState)" << endl;
-    }
-
-    // Constructing from a tmp drops the write option: set it here so the
-    // plastic history reaches every written time (and a restart)
-    const IOobject::writeOption historyWrite =
-        law_->plastic() ? IOobject::AUTO_WRITE : IOobject::NO_WRITE;
-    CpInv_.writeOpt() = historyWrite;
-    epsilonPf_.writeOpt() = historyWrite;
-
-    volumetricAveraging_ =
-        mechanicalProperties_.lookupOrDefault<bool>("volumetricAveraging", true);
-    volumetricAveragingWeight_ =
-        mechanicalProperties_.lookupOrDefault<scalar>
+        const volVectorField vel(velIo, mesh);
+        discretisation_.setPreviousStep
         (
-            "volumetricAveragingWeight", 1
+            D_.primitiveField() - vel.primitiveField()*dt0, dt0
         );
-    if (volumetricAveragingWeight_ < 0 || volumetricAveragingWeight_ > 1)
-    {
-        FatalIOErrorInFunction(mechanicalProperties_)
-            << "Keyword 'volumetricAveragingWeight' in "
-            << mechanicalProperties_.name() << " is "
-            << volumetricAveragingWeight_ << "; expected a value in [0, 1]"
-            << nl << exit(FatalIOError);
     }
-    for (direction d = 0; d < vector::nComponents; ++d)
+}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::totalLagrangianSolid::~totalLagrangianSolid()
+{
+    if (check_.valid())
     {
-        if (mesh.solutionD()[d] != 1)
+        Info<< "Jacobian check: largest relative difference "
+            << check_->largest() << " in " << check_->nChecks()
+            << " Jacobians" << endl;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::totalLagrangianSolid::beginStep
+(
+    Eigen::VectorXd& x,
+    Eigen::VectorXd& xStart,
+    const bool predict
+)
+{
+    // Boundary values at the new time (uniformFixedValue and the like)
+    D_.correctBoundaryConditions();
+
+    // [S19] nothing of the previous steps' linear solves carries over
+    linearSolver_->forgetHistory();
+
+    pack(discretisation_.D0(), xStart);
+    x = xStart;
+
+    if (predict)
+    {
+        const scalar ratio =
+            mesh_.time().deltaTValue()/discretisation_.deltaT0();
+        Eigen::VectorXd x00;
+        pack(discretisation_.D00(), x00);
+        x += ratio*(xStart - x00);
+    }
+}
+
+
+void Foam::totalLagrangianSolid::commit(const Eigen::VectorXd& x)
+{
+    vectorField u(mesh_.nCells());
+    unpack(x, u);
+    discretisation_.setIterate(u);
+    discretisation_.commit(mesh_.time().deltaTValue());
+
+    D_.primitiveFieldRef() = discretisation_.D0();
+    D_.correctBoundaryConditions();
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (bcs_.kind(patchi) == solidBoundaries::FORCE)
         {
-            emptyProjector_.component(4*d) = 1;
+            // the face displacement: the contact's slip and a restart
+            // start from it
+            D_.boundaryFieldRef()[patchi] ==
+                discretisation_.faceDisplacement(patchi);
         }
     }
+    Dprevious_.primitiveFieldRef() = discretisation_.D00();
+    Dprevious_.correctBoundaryConditions();
+}
 
-    // A restart with inertia reads the velocity to recover D at t - dt
-    if (inertia_)
+
+Foam::dictionary Foam::totalLagrangianSolid::state() const
+{
+    dictionary dict;
+    dict.add("deltaT0", discretisation_.deltaT0());
+    return dict;
+}
+
+
+void Foam::totalLagrangianSolid::setState(const dictionary& dict)
+{
+    discretisation_.setPreviousStep
+    (
+        Dprevious_.primitiveField(), dict.get<scalar>("deltaT0")
+    );
+}
+
+
+void Foam::totalLagrangianSolid::residual
+(
+    const Eigen::VectorXd& x,
+    Eigen::VectorXd& R
+)
+{
+    vectorField u(mesh_.nCells());
+    unpack(x, u);
+    discretisation_.setIterate(u);
+
+    vectorField Rcell(mesh_.nCells());
+    discretisation_.residual(Rcell);
+    pack(Rcell, R);
+}
+
+
+bool Foam::totalLagrangianSolid::updateJacobian(const Eigen::VectorXd& x)
+{
+    cpuTime timer;
+    vectorField u(mesh_.nCells());
+    unpack(x, u);
+    discretisation_.setIterate(u);
+    discretisation_.jacobian(jacobian_);
+    shiftDiagonal();
+    const scalar tAssembly = timer.cpuTimeIncrement();
+
+    List<vectorField> Uf;
+    List<vectorField> Vf;
+    discretisation_.meanCouplings(Uf, Vf);
+    List<Eigen::VectorXd> U(Uf.size());
+    List<Eigen::VectorXd> V(Vf.size());
+    forAll(Uf, t)
     {
-        IOobject velIo
-        (
-            "V", mesh.time().timeName(), mesh, IOobject::READ_IF_PRESENT
-        );
-        if (velIo.typeHeaderOk<volVectorField>())
+        pack(Uf[t], U[t]);
+        pack(Vf[t], V[t]);
+    }
+
+    if (check_.valid())
+    {
+        check_->compare(*this, x, jacobian_, U, V, checkStep_*bodySize_);
+        discretisation_.setIterate(u);
+    }
+
+    const bool ok =
+        linearSolver_->update()
+     && meanCouplings_.update(U, V, linearSolver_());
+
+    if (debug)
+    {
+        Info<< "        Jacobian assembly " << tAssembly << " s, linear solver"
+            << " update " << timer.cpuTimeIncrement() << " s (CPU)" << endl;
+    }
+    return ok;
+}
+
+
+void Foam::totalLagrangianSolid::shiftDiagonal()
+{
+    // [S16] 1e-9 of the mean diagonal: the Jacobian of a body held only by
+    // contact that has just opened (or by nothing but friction in stick)
+    // is singular in its rigid-body modes; shifted, the factorisation
+    // stays defined and a Jacobian-free retry's preconditioner bounded.
+    // Elsewhere it changes the Newton step by 1e-9
+    const label nc = jacobian_.nComponents();
+    labelList diag(jacobian_.nRows());
+    scalar sum = 0;
+    forAll(diag, r)
+    {
+        diag[r] = jacobian_.find(r, jacobian_.globalRow(r));
+        for (label a = 0; a < nc; ++a)
         {
-            const volVectorField vel(velIo, mesh);
-            D00_ = D0_ - vel.primitiveField()*deltaT0_;
+            sum += mag(jacobian_(diag[r], a, a));
         }
     }
-
-    classifyPatches();
-    computeGradientWeights();
-
-    // [S14] force-scale floor: the face-force magnitudes each cell would
-    // balance under a uniform stress of E x 1e-6, summed as in residual()
+    const scalar shift =
+        1e-9*returnReduce(sum, sumOp<scalar>())
+       /max(returnReduce(jacobian_.nLocalUnknowns(), sumOp<label>()), 1);
+    forAll(diag, r)
     {
-        const scalar sigma = 1e-6*law_->E();
-        scalarField fMag(mesh.nCells(), Zero);
-        const scalarField& magSf = mesh.magSf();
-        forAll(mesh.owner(), facei)
+        for (label a = 0; a < nc; ++a)
         {
-            fMag[mesh.owner()[facei]] += sigma*magSf[facei];
-            fMag[mesh.neighbour()[facei]] += sigma*magSf[facei];
-        }
-        forAll(mesh.boundary(), patchi)
-        {
-            if (patchKinds_[patchi] != EMPTY)
-            {
-                const fvPatch& p = mesh.boundary()[patchi];
-                forAll(p, i)
-                {
-                    fMag[p.faceCells()[i]] += sigma*p.magSf()[i];
-                }
-            }
-        }
-        forceFloor_ = Foam::sqrt(gSumSqr(fMag));
-    }
-
-    if (preconditionerType_ == "fdJacobian")
-    {
-        fdJacobian_.reset
-        (
-            new finiteDifferenceJacobian(residualInfluence(), comps_.size())
-        );
-        Info<< "Preconditioner: finite-difference Jacobian, "
-            << returnReduce(fdJacobian_->nColours(), maxOp<label>())
-            << " colours" << endl;
-    }
-    else if (preconditionerType_ != "compact")
-    {
-        FatalIOErrorInFunction(mesh.solutionDict())
-            << "Keyword 'preconditioner' in dictionary "
-            << mesh.solutionDict().name() << "/solid is '"
-            << preconditionerType_ << "'; expected fdJacobian or compact"
-            << nl << exit(FatalIOError);
-    }
-
-    // Plastic history at the faces of every patch the stress is evaluated on
-    trialInternal_.setSize(mesh.nInternalFaces());
-    trialPatch_.setSize(mesh.boundary().size());
-    forcePatchD0_.setSize(mesh.boundary().size());
-    forAll(mesh.boundary(), patchi)
-    {
-        trialPatch_[patchi].setSize(mesh.boundary()[patchi].size());
-        if (patchKinds_[patchi] == FORCE)
-        {
-            // the written patch value is the face displacement (restart)
-            forcePatchD0_[patchi] = D_.boundaryField()[patchi];
+            jacobian_(diag[r], a, a) += shift;
         }
     }
+}
 
-    Info<< "Total Lagrangian solid: " << comps_.size() << "-D, "
-        << returnReduce(mesh.nCells(), sumOp<label>()) << " cells, law "
-        << law_->type() << ", E " << law_->E() << " Pa, nu " << law_->nu()
-        << (inertia_ ? ", with inertia" : ", quasi-static");
-    if (inertia_ && massScaling > 1)
-    {
-        Info<< " (mass scaling " << massScaling << ")";
-    }
-    Info<< nl << endl;
+
+Foam::string Foam::totalLagrangianSolid::failure() const
+{
+    return
+        "the Jacobian could not be factorised (singular) by the linear"
+        " solver " + linearSolver_->description() + ", sub-dictionary"
+        " linearSolver of " + mesh_.solutionDict().name()
+      + "/solid";
+}
+
+
+Foam::linearSolver::performance Foam::totalLagrangianSolid::solveJacobian
+(
+    const Eigen::VectorXd& b,
+    Eigen::VectorXd& dx,
+    const scalar relTol
+)
+{
+    return meanCouplings_.solve(linearSolver_(), b, dx, relTol);
 }
 
 

@@ -16,7 +16,55 @@ namespace linearSolvers
 }
 
 
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+bool Foam::linearSolvers::eigenLU::factorise()
+{
+    if (!analysed_)
+    {
+        lu_.analyzePattern(A_);
+        analysed_ = true;
+    }
+    lu_.factorize(A_);
+    factorised_ = lu_.info() == Eigen::Success;
+    factorsCurrent_ = factorised_;
+    return factorised_;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::linearSolvers::eigenLU::eigenLU
+(
+    const dictionary& dict,
+    const blockSparseMatrix& matrix,
+    const bool blockJacobi
+)
+:
+    linearSolver(dict, matrix),
+    analysed_(false),
+    factorised_(false),
+    factorsCurrent_(false),
+    blockJacobi_(blockJacobi),
+    // a preconditioner (block Jacobi) is applied as it is
+    reuse_(!blockJacobi && dict.lookupOrDefault<bool>("reuse", true)),
+    maxReuseIterations_
+    (
+        dict.lookupOrDefault<label>("maxReuseIterations", 10)
+    )
+{
+    if (maxReuseIterations_ < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'maxReuseIterations' in dictionary " << dict.name()
+            << " must be >= 1, got " << maxReuseIterations_ << nl
+            << exit(FatalIOError);
+    }
+    gmres_.preconditioner().set(lu_);
+    gmres_.setMaxIterations(maxReuseIterations_);
+    gmres_.set_restart(maxReuseIterations_ + 1);
+}
+
 
 Foam::linearSolvers::eigenLU::eigenLU
 (
@@ -24,8 +72,7 @@ Foam::linearSolvers::eigenLU::eigenLU
     const blockSparseMatrix& matrix
 )
 :
-    linearSolver(dict, matrix),
-    analysed_(false)
+    eigenLU(dict, matrix, false)
 {
     if (Pstream::parRun())
     {
@@ -39,16 +86,26 @@ Foam::linearSolvers::eigenLU::eigenLU
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::string Foam::linearSolvers::eigenLU::description() const
+{
+    return
+        reuse_
+      ? "sparse LU (Eigen, COLAMD ordering), factors reused by GMRES for up"
+        " to " + Foam::name(maxReuseIterations_) + " iterations"
+      : "sparse LU (Eigen, COLAMD ordering)";
+}
+
+
 bool Foam::linearSolvers::eigenLU::update()
 {
-    A_ = matrix_.eigenMatrix();
-    if (!analysed_)
+    A_ = blockJacobi_ ? matrix_.localBlock() : matrix_.eigenMatrix();
+    if (reuse_ && factorised_)
     {
-        lu_.analyzePattern(A_);
-        analysed_ = true;
+        // solve() decides whether the earlier factors still do
+        factorsCurrent_ = false;
+        return true;
     }
-    lu_.factorize(A_);
-    return lu_.info() == Eigen::Success;
+    return factorise();
 }
 
 
@@ -60,8 +117,42 @@ Foam::linearSolver::performance Foam::linearSolvers::eigenLU::solve
 )
 {
     performance p;
-    x = lu_.solve(b);
     const scalar normB = b.norm();
+
+    if (!factorsCurrent_)
+    {
+        // the current matrix, preconditioned by the earlier factors
+        gmres_.compute(A_);
+        gmres_.setTolerance(relTol);
+        const Eigen::VectorXd x0(x);
+        x = gmres_.solveWithGuess(b, x0);
+        p.iterations = gmres_.iterations();
+
+        // Eigen's GMRES is left preconditioned: its error is the
+        // preconditioned residual, which outdated factors (a contact
+        // active set that has changed since) can make small while the
+        // true one is not
+        if (gmres_.info() == Eigen::Success && x.allFinite())
+        {
+            p.relativeResidual =
+                normB > 0 ? scalar((b - A_*x).norm()/normB) : scalar(0);
+            if (p.relativeResidual <= relTol)
+            {
+                p.converged = true;
+                return p;
+            }
+        }
+        if (!factorise())
+        {
+            x.setConstant(NAN);
+            p.reason =
+                "the matrix could not be factorised (singular), linear"
+                " solver eigenLU of " + dict_.name();
+            return p;
+        }
+    }
+
+    x = lu_.solve(b);
     p.relativeResidual =
         normB > 0 ? scalar((b - A_*x).norm()/normB) : scalar(0);
     p.converged = x.allFinite();

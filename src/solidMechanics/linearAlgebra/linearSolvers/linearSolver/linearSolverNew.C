@@ -5,6 +5,24 @@ License
 
 #include "linearSolver.H"
 #include "PstreamReduceOps.H"
+#include "OSspecific.H"
+#include "HashSet.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Members of the family that live in libraries of their own, loaded on
+//  first use: the programs that never select them need not link them (nor
+//  the libraries they bring, e.g. PETSc and MPI)
+const char* libraryOf(const Foam::word& solverType)
+{
+    return solverType == "petsc" ? "liblinearSolversPetsc.so" : nullptr;
+}
+
+} // End anonymous namespace
+
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
@@ -39,17 +57,52 @@ Foam::autoPtr<Foam::linearSolver> Foam::linearSolver::New
             << " with " << matrix.nComponents() << " unknowns per cell and "
             << nCells << " cells; directCellLimit " << directCellLimit
             << ")" << endl;
+
+        // Without the PETSc library: the serial sparse LU, or in parallel
+        // its block-Jacobi form as a preconditioner
+        const char* lib = libraryOf(solverType);
+        std::string loadError;
+        if
+        (
+            !dictionaryConstructorTablePtr_->found(solverType)
+         && !(lib && Foam::dlOpen(lib, loadError))
+        )
+        {
+            solverType = Pstream::parRun() ? "blockJacobiLU" : "eigenLU";
+            Info<< "    (petsc is not built: " << solverType << " instead)"
+                << endl;
+        }
     }
 
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(solverType);
 
+    const char* lib = libraryOf(solverType);
+    if (!cstrIter.found() && lib)
+    {
+        // The handle is never closed: the library (and PETSc's exit
+        // hooks) stays loaded until the program ends
+        std::string loadError;
+        if (!Foam::dlOpen(lib, loadError))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Linear solver '" << solverType << "' (keyword 'type' in"
+                << " dictionary " << dict.name() << ") is in " << lib
+                << ", which could not be loaded:" << nl << "    "
+                << loadError.c_str() << nl
+                << "It is built by ./Allwmake when PETSc is installed"
+                << " (Debian package petsc-dev)" << exit(FatalIOError);
+        }
+        cstrIter = dictionaryConstructorTablePtr_->cfind(solverType);
+    }
+
     if (!cstrIter.found())
     {
+        wordHashSet valid(dictionaryConstructorTablePtr_->toc());
+        valid.insert("petsc");
         FatalIOErrorInFunction(dict)
             << "Unknown linear solver '" << solverType << "' for keyword"
             << " 'type' in dictionary " << dict.name() << nl
-            << "Valid types: "
-            << dictionaryConstructorTablePtr_->sortedToc() << nl
+            << "Valid types: " << valid.sortedToc() << nl
             << exit(FatalIOError);
     }
 

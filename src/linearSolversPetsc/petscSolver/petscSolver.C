@@ -1,0 +1,332 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "petscSolver.H"
+#include "petscSession.H"
+#include "addToRunTimeSelectionTable.H"
+#include "PstreamReduceOps.H"
+#include <cmath>
+
+namespace Foam
+{
+namespace linearSolvers
+{
+    defineTypeNameAndDebug(petscSolver, 0);
+    addToRunTimeSelectionTable(linearSolver, petscSolver, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- PETSc's name of a failed set-up and what it means here
+std::string explain(const PCFailedReason reason)
+{
+    std::string s = PCFailedReasons[reason];
+    switch (reason)
+    {
+        case PC_FACTOR_STRUCT_ZEROPIVOT:
+        case PC_FACTOR_NUMERIC_ZEROPIVOT:
+            return s + " (a zero pivot: the matrix is singular)";
+        case PC_FACTOR_OUTMEMORY:
+            return s + " (out of memory in the factorisation)";
+        case PC_SUBPC_ERROR:
+            return s + " (the factorisation of a processor's block failed:"
+                " zero pivot)";
+        default:
+            return s;
+    }
+}
+
+//- A PETSc error of the numbers (a zero pivot, a floating-point exception,
+//  an external solver's numerical failure), which a smaller load step may
+//  avoid, unlike an error of the configuration
+bool numerical(const PetscErrorCode ierr)
+{
+    return
+        ierr == PETSC_ERR_MAT_LU_ZRPVT || ierr == PETSC_ERR_MAT_CH_ZRPVT
+     || ierr == PETSC_ERR_FP || ierr == PETSC_ERR_LIB
+     || ierr == PETSC_ERR_NOT_CONVERGED || ierr == PETSC_ERR_CONV_FAILED;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::linearSolvers::petscSolver::check
+(
+    const PetscErrorCode ierr,
+    const char* what
+) const
+{
+    if (ierr)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "PETSc failed " << what << " for the linear solver of "
+            << dict_.name() << " (options prefix " << options_.prefix()
+            << "):" << nl
+            << "    " << petscSession::message(ierr).c_str() << nl
+            << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::linearSolvers::petscSolver::petscSolver
+(
+    const dictionary& dict,
+    const blockSparseMatrix& matrix
+)
+:
+    linearSolver(dict, matrix),
+    options_
+    (
+        dict.lookupOrDefault<word>("prefix", defaultPrefix(dict)), dict
+    ),
+    kspName_(),
+    pcName_(),
+    maxIterations_(500),
+    view_(false),
+    A_(matrix),
+    ksp_(nullptr),
+    r_(nullptr),
+    nModes_(-1),
+    setUp_(false),
+    setUpFailure_("update() was not called"),
+    checkedOptions_(false),
+    description_()
+{
+    petscSession::start();
+    petscSession::fpeGuard guard;
+
+    readKeywords();
+    check(A_.create(options_.prefix().c_str()), "creating the matrix");
+    check(VecDuplicate(A_.x(), &r_), "creating a vector");
+    createKsp();
+
+    description_ = describe();
+    Info<< "Linear solver petsc: " << description_.c_str() << endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::linearSolvers::petscSolver::~petscSolver()
+{
+    if (petscSession::running())
+    {
+        petscSession::fpeGuard guard;
+        KSPDestroy(&ksp_);
+        VecDestroy(&r_);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::linearSolvers::petscSolver::update()
+{
+    petscSession::fpeGuard guard;
+
+    check(A_.assemble(), "assembling the matrix");
+    if (nModes_ < 0)
+    {
+        check(A_.setRigidBodyModes(nModes_), "building the rigid-body modes");
+        Info<< "Linear solver petsc: near-null space: ";
+        if (nModes_ > 0)
+        {
+            Info<< nModes_ << " rigid-body modes of the cell centres" << endl;
+        }
+        else
+        {
+            Info<< "translations (no cell coordinates given)" << endl;
+        }
+    }
+    check
+    (
+        KSPSetOperators(ksp_, A_.mat(), A_.mat()),
+        "setting the operator"
+    );
+
+    // Factorisation and multigrid set-up. A numerical failure is the
+    // caller's to handle (reject the step), on every processor alike
+    PetscErrorCode ierr = KSPSetUp(ksp_);
+    if (!ierr)
+    {
+        ierr = KSPSetUpOnBlocks(ksp_);
+    }
+    setUpFailure_.clear();
+    if (ierr && numerical(ierr))
+    {
+        setUpFailure_ = petscSession::message(ierr);
+    }
+    else
+    {
+        check(ierr, "setting up the preconditioner");
+    }
+    if (setUpFailure_.empty())
+    {
+        PC pc = nullptr;
+        PCFailedReason reason = PC_NOERROR;
+        check(KSPGetPC(ksp_, &pc), "getting the preconditioner");
+        check(PCGetFailedReason(pc, &reason), "querying the set-up");
+        if (reason != PC_NOERROR)
+        {
+            setUpFailure_ = explain(reason);
+        }
+    }
+
+    setUp_ = !returnReduce(!setUpFailure_.empty(), orOp<bool>());
+    if (!setUp_)
+    {
+        // Every processor reports the first failing one's reason
+        List<string> reasons(Pstream::nProcs());
+        reasons[Pstream::myProcNo()] = setUpFailure_;
+        Pstream::gatherList(reasons);
+        Pstream::scatterList(reasons);
+        forAll(reasons, proci)
+        {
+            if (!reasons[proci].empty())
+            {
+                setUpFailure_ = reasons[proci];
+                if (Pstream::parRun())
+                {
+                    setUpFailure_ += " on processor " + Foam::name(proci);
+                }
+                break;
+            }
+        }
+        Info<< "Linear solver petsc: preconditioner set-up failed ("
+            << setUpFailure_.c_str() << ")" << endl;
+
+        // PETSc keeps a failed set-up's state (in the preconditioner and
+        // its sub-solvers): start afresh at the next update (the caller
+        // re-assembles after rejecting the step)
+        check(KSPDestroy(&ksp_), "destroying the solver");
+        createKsp();
+    }
+    return setUp_;
+}
+
+
+Foam::linearSolver::performance Foam::linearSolvers::petscSolver::solve
+(
+    const Eigen::VectorXd& b,
+    Eigen::VectorXd& x,
+    const scalar relTol
+)
+{
+    performance p;
+    if (!setUp_)
+    {
+        p.reason = "the preconditioner set-up failed: " + setUpFailure_;
+        return p;
+    }
+
+    petscSession::fpeGuard guard;
+
+    if (b.size() != matrix_.nLocalUnknowns() || x.size() != b.size())
+    {
+        FatalErrorInFunction
+            << "Vector sizes " << label(b.size()) << ", " << label(x.size())
+            << " differ from the matrix's " << matrix_.nLocalUnknowns()
+            << " local unknowns" << abort(FatalError);
+    }
+
+    Vec bp = A_.b(), xp = A_.x();
+    check(A_.toPetsc(b, bp), "copying the right-hand side");
+    check(A_.toPetsc(x, xp), "copying the initial guess");
+
+    PetscReal normB = 0;
+    check(VecNorm(bp, NORM_2, &normB), "computing a norm");
+    if (normB == 0)
+    {
+        x.setZero();
+        p.converged = true;
+        return p;
+    }
+
+    check
+    (
+        KSPSetTolerances
+        (
+            ksp_, relTol, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT
+        ),
+        "setting the tolerance"
+    );
+
+    const PetscErrorCode ierr = KSPSolve(ksp_, bp, xp);
+    if (!numerical(ierr))
+    {
+        check(ierr, "solving");
+    }
+    const std::string solveError = petscSession::message(ierr);
+
+    KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+    PetscInt its = 0;
+    check(KSPGetConvergedReason(ksp_, &reason), "querying the solve");
+    check(KSPGetIterationNumber(ksp_, &its), "querying the solve");
+    check(A_.fromPetsc(xp, x), "copying the solution");
+
+    // The true residual, whatever norm the method monitored
+    PetscReal normR = 0;
+    check(MatMult(A_.mat(), xp, r_), "multiplying");
+    check(VecAYPX(r_, -1, bp), "computing the residual");
+    check(VecNorm(r_, NORM_2, &normR), "computing a norm");
+
+    p.iterations = its;
+    p.relativeResidual = normR/normB;
+    p.converged =
+        !returnReduce(ierr != 0, orOp<bool>())
+     && reason > 0
+     && std::isfinite(p.relativeResidual);
+
+    if (!p.converged)
+    {
+        if (ierr)
+        {
+            p.reason = "PETSc error in KSPSolve: " + solveError;
+        }
+        else
+        {
+            p.reason = word(KSPConvergedReasons[reason]);
+        }
+        if (reason == KSP_DIVERGED_ITS)
+        {
+            p.reason += " (maxIterations " + Foam::name(maxIterations_)
+                + " in " + dict_.name() + ")";
+        }
+        else if (reason == KSP_DIVERGED_PC_FAILED)
+        {
+            PC pc = nullptr;
+            PCFailedReason pcReason = PC_NOERROR;
+            KSPGetPC(ksp_, &pc);
+            PCGetFailedReason(pc, &pcReason);
+            p.reason += ": " + explain(pcReason);
+        }
+    }
+
+    if (view_ && !checkedOptions_)
+    {
+        check(KSPView(ksp_, PETSC_VIEWER_STDOUT_WORLD), "viewing the solver");
+    }
+    if (!checkedOptions_)
+    {
+        // Every option has been read by now (some only at set-up or at
+        // the end of the first solve)
+        checkUnusedOptions();
+        checkedOptions_ = true;
+    }
+
+    return p;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,382 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "newtonSolver.H"
+#include "IOstreams.H"
+#include "cpuTime.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::newtonSolver::method>
+Foam::newtonSolver::methodNames
+({
+    { method::exact, "exact" },
+    { method::jacobianFree, "jacobianFree" },
+});
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+static newtonSolver::method readMethod(const dictionary& dict)
+{
+    const word name(dict.lookupOrDefault<word>("newtonMethod", "exact"));
+    if (!newtonSolver::methodNames.found(name))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'newtonMethod' in dictionary " << dict.name()
+            << " is '" << name << "'; expected one of "
+            << newtonSolver::methodNames.sortedToc() << nl
+            << exit(FatalIOError);
+    }
+    return newtonSolver::methodNames[name];
+}
+
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::newtonSolver::newtonSolver(const dictionary& dict)
+:
+    method_(readMethod(dict)),
+    forceTol_(dict.lookupOrDefault<scalar>("forceTolerance", 1e-7)),
+    acceptableForceTol_
+    (
+        dict.lookupOrDefault<scalar>("acceptableForceTolerance", 0)
+    ),
+    stallIterations_(dict.lookupOrDefault<label>("stallIterations", 8)),
+    displacementTol_
+    (
+        dict.lookupOrDefault<scalar>("displacementTolerance", 1e-7)
+    ),
+    maxNewton_(dict.lookupOrDefault<label>("maxNewtonIterations", 25)),
+    verbose_(dict.lookupOrDefault<bool>("verbose", false)),
+    fullStepFallback_(dict.lookupOrDefault<bool>("fullStepFallback", false)),
+    holdLinearisation_
+    (
+        dict.lookupOrDefault<bool>("holdContactLinearisation", true)
+    ),
+    krylovRefresh_(dict.lookupOrDefault<label>("krylovRefresh", 15)),
+    gmres_(dict),
+    nResidualEvaluations_(0),
+    jacobianFree_(false)
+{
+    if (dict.found("preconditioner"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'preconditioner' in dictionary " << dict.name()
+            << " was removed: the Jacobian is now assembled exactly"
+            << " (doc/theory.md [S21])." << nl
+            << "Choose the method with 'newtonMethod exact;' (default) or"
+            << " 'newtonMethod jacobianFree;' and the linear solver with"
+            << " 'linearSolver { type eigenLU; }'" << nl
+            << exit(FatalIOError);
+    }
+    if (!(forceTol_ > 0) || !(displacementTol_ > 0) || maxNewton_ < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Dictionary " << dict.name() << ": expected forceTolerance > 0"
+            << " (got " << forceTol_ << "), displacementTolerance > 0 (got "
+            << displacementTol_ << ") and maxNewtonIterations >= 1 (got "
+            << maxNewton_ << ")" << nl << exit(FatalIOError);
+    }
+    if (acceptableForceTol_ < 0 || stallIterations_ < 1 || krylovRefresh_ < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Dictionary " << dict.name() << ": expected"
+            << " acceptableForceTolerance >= 0 (got " << acceptableForceTol_
+            << "), stallIterations >= 1 (got " << stallIterations_
+            << ") and krylovRefresh >= 0 (got " << krylovRefresh_ << ")"
+            << nl << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::newtonSolver::evaluate
+(
+    nonlinearSystem& sys,
+    const Eigen::VectorXd& x,
+    Eigen::VectorXd& R
+)
+{
+    ++nResidualEvaluations_;
+    sys.residual(x, R);
+}
+
+
+bool Foam::newtonSolver::step
+(
+    nonlinearSystem& sys,
+    const Eigen::VectorXd& x,
+    const Eigen::VectorXd& R,
+    const scalar linTol,
+    const label it,
+    label& lastKrylov,
+    Eigen::VectorXd& dx,
+    result& res
+)
+{
+    if (!jacobianFree_)
+    {
+        // [S14] exact Newton: the assembled Jacobian at x, solved to the
+        // forcing term (a direct solver solves exactly)
+        cpuTime timer;
+        if (!sys.updateJacobian(x))
+        {
+            res.reason = sys.failure();
+            return false;
+        }
+        const scalar tJacobian = timer.cpuTimeIncrement();
+        dx.setZero(x.size());
+        const scalar normR = gNorm(R);
+        const linearSolver::performance perf =
+            sys.solveJacobian(R, dx, normR > 0 ? min(linTol/normR, 0.1) : 0.1);
+        if (verbose_)
+        {
+            Info<< "        Jacobian " << tJacobian << " s, linear solve "
+                << timer.cpuTimeIncrement() << " s (CPU)" << endl;
+        }
+        lastKrylov = perf.iterations;
+        if (!gFinite(dx))
+        {
+            res.reason =
+                perf.reason.empty()
+              ? string("the linear solve gave a non-finite correction")
+              : perf.reason;
+            return false;
+        }
+        if (!perf.converged && verbose_)
+        {
+            Info<< "        linear solver: " << perf.reason.c_str()
+                << ", relative residual " << perf.relativeResidual << endl;
+        }
+        return true;
+    }
+
+    // [S15] Jacobian-free: the assembled Jacobian (refreshed when the last
+    // Krylov solve needed many iterations) preconditions GMRES, during
+    // which the contact faces keep their active set [S15b]
+    if (it == 0 || lastKrylov < 0 || lastKrylov > krylovRefresh_)
+    {
+        if (!sys.updateJacobian(x))
+        {
+            res.reason = sys.failure();
+            return false;
+        }
+    }
+    if (holdLinearisation_)
+    {
+        sys.holdLinearisation(true);
+    }
+    lastKrylov = gmres_.solve(sys, x, R, linTol, dx, nResidualEvaluations_);
+    if (holdLinearisation_)
+    {
+        sys.holdLinearisation(false);
+    }
+    return true;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::newtonSolver::result Foam::newtonSolver::solve
+(
+    nonlinearSystem& sys,
+    Eigen::VectorXd& x,
+    const Eigen::VectorXd& xStart,
+    const bool jacobianFree
+)
+{
+    result res;
+    nResidualEvaluations_ = 0;
+    jacobianFree_ =
+        jacobianFree
+     || method_ == method::jacobianFree
+     || sys.approximateJacobianSolve();
+
+    Eigen::VectorXd R(x.size()), Rtrial(x.size()), dx(x.size());
+    Eigen::VectorXd xTrial(x.size()), xFull(x.size()), Rfull(x.size());
+    scalar normFull = GREAT;
+
+    evaluate(sys, x, R);
+    scalar normR = gNorm(R);
+    scalar normRprev = normR;
+
+    // The best iterate: a step that stalls returns it rather than the last
+    // one (which the non-monotone line search may have made worse)
+    Eigen::VectorXd xBest(x);
+    scalar normBest = normR;
+    label itBest = 0;
+    scalar eta = 1e-2;
+    label lastKrylov = -1;
+
+    for (label it = 0; it <= maxNewton_; ++it)
+    {
+        if (!gFinite(R))
+        {
+            res.reason = "residual is not finite";
+            break;
+        }
+
+        const scalar Fscale = sys.forceScale();
+        res.forceResidual = Fscale > 0 ? normR/Fscale : (normR > 0 ? 1 : 0);
+
+        const scalar increment =
+            max(gMaxNorm(x - xStart), 1e-6*sys.typicalDisplacement());
+        res.displacementResidual = it > 0 ? gMaxNorm(dx)/increment : 0;
+
+        if (verbose_)
+        {
+            Info<< "    Newton " << it << ": force residual "
+                << res.forceResidual << ", displacement correction "
+                << res.displacementResidual << endl;
+        }
+
+        if
+        (
+            res.forceResidual <= forceTol_
+         && res.displacementResidual <= displacementTol_
+        )
+        {
+            res.converged = true;
+            break;
+        }
+        const scalar bestResidual = Fscale > 0 ? normBest/Fscale : 1;
+        const bool accept =
+            bestResidual <= acceptableForceTol_
+         && (it == maxNewton_ || it - itBest >= stallIterations_);
+        if (accept || it == maxNewton_)
+        {
+            if (normBest < normR)
+            {
+                x = xBest;
+                evaluate(sys, x, R);
+                res.forceResidual = bestResidual;
+            }
+            res.converged = accept;
+            res.accepted = accept;
+            if (!accept)
+            {
+                res.reason = "no convergence in maxNewtonIterations";
+            }
+            break;
+        }
+
+        // Eisenstat-Walker forcing term (choice 2), no tighter than needed
+        // to reach the force tolerance; after a step that barely lowered
+        // |R| (an active set changing) the tightest, since a loose solve
+        // with an outdated preconditioner then misleads Newton further
+        if (it > 0)
+        {
+            const scalar ratio = normR/max(normRprev, VSMALL);
+            eta = ratio < 0.9 ? min(0.1, max(0.9*sqr(ratio), 1e-4)) : 1e-4;
+        }
+        const scalar linTol = max(eta*normR, 0.1*forceTol_*Fscale);
+
+        if (!step(sys, x, R, linTol, it, lastKrylov, dx, res))
+        {
+            break;
+        }
+        res.krylovIterations += lastKrylov;
+        ++res.newtonIterations;
+
+        // A correction larger than 1 % of the body is not a Newton step
+        // but the answer of a (nearly) singular Jacobian: a body held only
+        // by contact that has just opened moves freely. It is scaled down,
+        // and the line search below finds how far it may go
+        const scalar maxCorrection = 1e4*sys.typicalDisplacement();
+        const scalar dxMax = gMaxNorm(dx);
+        if (dxMax > maxCorrection)
+        {
+            dx *= maxCorrection/dxMax;
+        }
+
+        // Backtracking line search on |R| (Armijo). When no fraction of
+        // the step lowers |R| enough (an active-set change: faces closing
+        // into stiff contact make the residual jump before it falls), the
+        // largest fraction that does not raise |R| is taken (a free body
+        // moving towards its support), else the smallest one, or the full
+        // step with fullStepFallback
+        scalar lambda = 1;
+        scalar normTrial = GREAT;
+        bool decreased = false;
+        scalar lambdaFlat = -1;
+        for (label ls = 0; ls < 6; ++ls)
+        {
+            xTrial = x + lambda*dx;
+            evaluate(sys, xTrial, Rtrial);
+            normTrial = gFinite(Rtrial) ? gNorm(Rtrial) : GREAT;
+            if (ls == 0)
+            {
+                xFull = xTrial;
+                Rfull = Rtrial;
+                normFull = normTrial;
+            }
+            if (normTrial <= (1 - 1e-4*lambda)*normR)
+            {
+                decreased = true;
+                break;
+            }
+            if (lambdaFlat < 0 && normTrial <= normR)
+            {
+                lambdaFlat = lambda;
+            }
+            lambda *= 0.5;
+        }
+        if (!decreased && normFull < GREAT && fullStepFallback_)
+        {
+            lambda = 1;
+            xTrial = xFull;
+            Rtrial = Rfull;
+            normTrial = normFull;
+            // the system's fields must hold the accepted iterate
+            evaluate(sys, xTrial, Rtrial);
+        }
+        else if (!decreased && lambdaFlat > 0)
+        {
+            lambda = lambdaFlat;
+            xTrial = x + lambda*dx;
+            evaluate(sys, xTrial, Rtrial);
+            normTrial = gFinite(Rtrial) ? gNorm(Rtrial) : GREAT;
+        }
+        if (normTrial >= GREAT)
+        {
+            res.reason = "residual is not finite after the line search";
+            break;
+        }
+
+        if (verbose_)
+        {
+            Info<< "        " << lastKrylov << " linear iterations, step "
+                << lambda << (decreased ? "" : " (no decrease)") << endl;
+        }
+
+        dx *= lambda;
+        x = xTrial;
+        R = Rtrial;
+        normRprev = normR;
+        normR = normTrial;
+        if (normR < normBest)
+        {
+            if (normR < 0.9*normBest)
+            {
+                itBest = it + 1;
+            }
+            normBest = normR;
+            xBest = x;
+        }
+    }
+
+    res.residualEvaluations = nResidualEvaluations_;
+    return res;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,597 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "solidDiscretisation.H"
+#include "calculatedFvPatchFields.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(solidDiscretisation, 0);
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+//- History field read from the start time if written, else its initial
+//  value; written only when the law is plastic
+template<class Type>
+static tmp<GeometricField<Type, fvsPatchField, surfaceMesh>> historyField
+(
+    const fvMesh& mesh,
+    const word& name,
+    const Type& initial
+)
+{
+    typedef GeometricField<Type, fvsPatchField, surfaceMesh> fieldType;
+    IOobject io
+    (
+        name,
+        mesh.time().timeName(),
+        mesh,
+        IOobject::READ_IF_PRESENT,
+        IOobject::NO_WRITE
+    );
+    if (io.typeHeaderOk<fieldType>())
+    {
+        return tmp<fieldType>::New(io, mesh);
+    }
+    io.readOpt() = IOobject::NO_READ;
+    return tmp<fieldType>::New
+    (
+        io, mesh, dimensioned<Type>(name, dimless, initial)
+    );
+}
+
+
+//- Projector on the unsolved direction of a plane-strain mesh
+static tensor emptyProjector(const fvMesh& mesh, const bool axisymmetric)
+{
+    tensor E(Zero);
+    if (!axisymmetric)
+    {
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            if (mesh.geometricD()[d] != 1)
+            {
+                E.component(4*d) = 1;
+            }
+        }
+    }
+    return E;
+}
+
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::solidDiscretisation::computeForceFloor() const
+{
+    const scalar sigma = 1e-6*law_.E();
+    scalarField fMag(mesh_.nCells(), Zero);
+    const scalarField& magSf = mesh_.magSf();
+    forAll(mesh_.owner(), facei)
+    {
+        fMag[mesh_.owner()[facei]] += sigma*magSf[facei];
+        fMag[mesh_.neighbour()[facei]] += sigma*magSf[facei];
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (bcs_.kind(patchi) != solidBoundaries::EMPTY)
+        {
+            const fvPatch& p = mesh_.boundary()[patchi];
+            forAll(p, i)
+            {
+                fMag[p.faceCells()[i]] += sigma*p.magSf()[i];
+            }
+        }
+    }
+    return Foam::sqrt(gSumSqr(fMag));
+}
+
+
+Foam::materialState Foam::solidDiscretisation::oldState
+(
+    const label patchi,
+    const label facei
+) const
+{
+    materialState s;
+    if (patchi < 0)
+    {
+        s.CpInv = CpInv_[facei];
+        s.epsilonP = epsilonPf_[facei];
+    }
+    else
+    {
+        s.CpInv = CpInv_.boundaryField()[patchi][facei];
+        s.epsilonP = epsilonPf_.boundaryField()[patchi][facei];
+    }
+    return s;
+}
+
+
+Foam::tensor Foam::solidDiscretisation::internalFaceF(const label facei) const
+{
+    const label P = mesh_.owner()[facei];
+    const label N = mesh_.neighbour()[facei];
+    const vectorField& u = u_.primitiveField();
+    const vectorField& C = mesh_.C().primitiveField();
+    const scalar w = mesh_.weights()[facei];
+
+    return fbar_.apply
+    (
+        volumetricAveraging::faceDefGrad
+        (
+            G_[P], G_[N], w, C[N] - C[P], u[N] - u[P]
+        ),
+        w*J_[P] + (1 - w)*J_[N]
+    );
+}
+
+
+Foam::tensor Foam::solidDiscretisation::boundaryFaceF
+(
+    const label patchi,
+    const label i
+) const
+{
+    const fvPatch& p = mesh_.boundary()[patchi];
+    const label P = p.faceCells()[i];
+    const vector& uP = u_[P];
+    const tensor& GP = G_[P];
+
+    const vector& delta = patchDelta_[patchi][i];
+
+    switch (bcs_.kind(patchi))
+    {
+        case solidBoundaries::COUPLED:
+        {
+            // the neighbour's values, exchanged by setIterate()
+            const scalar w = p.weights()[i];
+            const tensor& GN = GNbr_[patchi][i];
+            return fbar_.apply
+            (
+                volumetricAveraging::faceDefGrad
+                (
+                    GP, GN, w, delta, uNbr_[patchi][i] - uP
+                ),
+                w*J_[P] + (1 - w)*det(tensor::I + GN.T())
+            );
+        }
+        case solidBoundaries::FIXED:
+        {
+            const vector& Db = D_.boundaryField()[patchi][i];
+            return fbar_.apply
+            (
+                volumetricAveraging::faceDefGrad(GP, GP, 1, delta, Db - uP),
+                J_[P]
+            );
+        }
+        case solidBoundaries::SYMMETRY:
+        {
+            // the tangential part of the extrapolated value
+            const vector& n = patchNormal_[patchi][i];
+            const vector uB(uP + (delta & GP));
+            return fbar_.apply
+            (
+                volumetricAveraging::faceDefGrad
+                (
+                    GP, GP, 1, delta, (uB - (n & uB)*n) - uP
+                ),
+                J_[P]
+            );
+        }
+        case solidBoundaries::WEDGE:
+        {
+            // [S20] the axisymmetric field rotated onto the face: the same
+            // volume change, so F-bar leaves it as it is
+            const tensor& T = bcs_.wedgeRotation(patchi);
+            return T & (tensor::I + GP.T()) & T.T();
+        }
+        default:
+            FatalErrorInFunction
+                << "No face deformation gradient on patch "
+                << p.name() << abort(FatalError);
+    }
+    return tensor::I;
+}
+
+
+void Foam::solidDiscretisation::forcePatchKinematics
+(
+    const label patchi,
+    vectorField& Dface,
+    tensorField& F
+) const
+{
+    // [C2] the face value extrapolated from the cell with its gradient
+    const labelUList& fc = mesh_.boundary()[patchi].faceCells();
+    const vectorField& d = patchDelta_[patchi];
+
+    Dface.setSize(fc.size());
+    F.setSize(fc.size());
+    forAll(fc, i)
+    {
+        const tensor& Gi = G_[fc[i]];
+        Dface[i] = u_[fc[i]] + (d[i] & Gi);
+        F[i] = tensor::I + Gi.T();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::solidDiscretisation::forceKinematics::forceKinematics
+(
+    const solidDiscretisation& disc,
+    const label patchi,
+    const scalar deltaT
+)
+:
+    Dface_(),
+    F_(),
+    // Dface_ and F_ are filled before k refers to them (the aggregate's
+    // clauses are evaluated in order)
+    k
+    {
+        disc.mesh_.boundary()[patchi].Sf(),
+        disc.mesh_.boundary()[patchi].Cf(),
+        (disc.forcePatchKinematics(patchi, Dface_, F_), Dface_),
+        disc.forcePatchD0_[patchi],
+        F_,
+        disc.mesh_.time().value(),
+        deltaT
+    }
+{}
+
+
+Foam::solidDiscretisation::solidDiscretisation
+(
+    const dictionary& mechanicalProperties,
+    const mechanicalLaw& law,
+    const volVectorField& D,
+    const solidBoundaries& bcs
+)
+:
+    mesh_(D.mesh()),
+    law_(law),
+    bcs_(bcs),
+    D_(D),
+    grad_(mesh_, bcs),
+    fbar_
+    (
+        mechanicalProperties,
+        bcs.axisymmetric() ? 3 : mesh_.nGeometricD(),
+        emptyProjector(mesh_, bcs.axisymmetric())
+    ),
+    u_
+    (
+        IOobject("Dwork", mesh_.time().timeName(), mesh_),
+        D,
+        calculatedFvPatchVectorField::typeName
+    ),
+    G_
+    (
+        IOobject("gradDwork", mesh_.time().timeName(), mesh_),
+        mesh_,
+        dimensionedTensor(dimless, Zero)
+    ),
+    J_(mesh_.nCells(), 1),
+    CpInv_(historyField(mesh_, "CpInv", symmTensor::I)),
+    epsilonPf_(historyField(mesh_, "epsilonPf", scalar(0))),
+    trialInternal_(mesh_.nInternalFaces()),
+    trialPatch_(mesh_.boundary().size()),
+    inertia_(false),
+    inertiaDensity_(0),
+    D0_(D.primitiveField()),
+    D00_(D.primitiveField()),
+    deltaT0_(mesh_.time().deltaTValue()),
+    forcePatchD0_(mesh_.boundary().size()),
+    patchDelta_(mesh_.boundary().size()),
+    patchNormal_(mesh_.boundary().size()),
+    uNbr_(mesh_.boundary().size()),
+    GNbr_(mesh_.boundary().size()),
+    forceScale_(0),
+    forceFloor_(0)
+{
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& p = mesh_.boundary()[patchi];
+        patchDelta_[patchi] =
+            bcs.kind(patchi) == solidBoundaries::COUPLED
+          ? p.delta()
+          : tmp<vectorField>(p.Cf() - p.Cn());
+        patchNormal_[patchi] = p.nf();
+    }
+
+    // Constructing from a tmp drops the write option: set it here so the
+    // plastic history reaches every written time (and a restart)
+    const IOobject::writeOption historyWrite =
+        law.plastic() ? IOobject::AUTO_WRITE : IOobject::NO_WRITE;
+    CpInv_.writeOpt() = historyWrite;
+    epsilonPf_.writeOpt() = historyWrite;
+
+    const dictionary& schemes = mesh_.schemesDict();
+    const word d2dt2(schemes.subDict("d2dt2Schemes").get<word>("default"));
+    if (d2dt2 == "Euler")
+    {
+        inertia_ = true;
+    }
+    else if (d2dt2 != "steadyState")
+    {
+        FatalIOErrorInFunction(schemes)
+            << "Keyword 'default' in d2dt2Schemes of " << schemes.name()
+            << " is '" << d2dt2 << "'; expected steadyState (quasi-static)"
+            << " or Euler (inertia)" << nl << exit(FatalIOError);
+    }
+    if (inertia_ && law.rho() <= 0)
+    {
+        FatalIOErrorInFunction(mechanicalProperties)
+            << "Keyword 'rho' in " << mechanicalProperties.name()
+            << " must be > 0 when d2dt2Schemes is Euler" << nl
+            << exit(FatalIOError);
+    }
+
+    // [S13b] mass scaling: quasi-static forming runs with a heavier body so
+    // that the rate-dependent friction's instabilities resolve dynamically
+    const scalar massScaling =
+        mechanicalProperties.lookupOrDefault<scalar>("massScaling", 1);
+    if (!(massScaling >= 1 && massScaling <= 1e12))
+    {
+        FatalIOErrorInFunction(mechanicalProperties)
+            << "Keyword 'massScaling' in " << mechanicalProperties.name()
+            << " is " << massScaling << "; expected a value in [1, 1e12]"
+            << nl << exit(FatalIOError);
+    }
+    if (inertia_)
+    {
+        inertiaDensity_ = massScaling*law.rho();
+    }
+    else if (massScaling != 1)
+    {
+        IOWarningInFunction(mechanicalProperties)
+            << "Keyword 'massScaling' in " << mechanicalProperties.name()
+            << " has no effect: the run is quasi-static (d2dt2Schemes "
+            << "steadyState)" << endl;
+    }
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        trialPatch_[patchi].setSize(mesh_.boundary()[patchi].size());
+        if (bcs_.kind(patchi) == solidBoundaries::FORCE)
+        {
+            // the written patch value is the face displacement (restart)
+            forcePatchD0_[patchi] = D.boundaryField()[patchi];
+        }
+    }
+
+    forceFloor_ = computeForceFloor();
+
+    setIterate(D0_);
+
+    Info<< "Total Lagrangian solid: " << mesh_.nGeometricD() << "-D"
+        << (bcs.axisymmetric() ? " axisymmetric" : "") << ", "
+        << returnReduce(mesh_.nCells(), sumOp<label>()) << " cells, law "
+        << law.type() << ", E " << law.E() << " Pa, nu " << law.nu()
+        << (inertia_ ? ", with inertia" : ", quasi-static");
+    if (inertia_ && massScaling > 1)
+    {
+        Info<< " (mass scaling " << massScaling << ")";
+    }
+    Info<< nl << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::solidDiscretisation::setIterate(const vectorField& u)
+{
+    u_.primitiveFieldRef() = u;
+    u_.correctBoundaryConditions();
+
+    grad_.gradient(u_, D_, G_.primitiveFieldRef());
+    G_.correctBoundaryConditions();
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (bcs_.kind(patchi) == solidBoundaries::COUPLED)
+        {
+            uNbr_[patchi] = u_.boundaryField()[patchi].patchNeighbourField();
+            GNbr_[patchi] = G_.boundaryField()[patchi].patchNeighbourField();
+        }
+    }
+
+    forAll(J_, celli)
+    {
+        J_[celli] = det(tensor::I + G_[celli].T());
+    }
+}
+
+
+void Foam::solidDiscretisation::setPreviousStep
+(
+    const vectorField& D00,
+    const scalar dt0
+)
+{
+    D00_ = D00;
+    deltaT0_ = dt0;
+}
+
+
+Foam::tmp<Foam::vectorField> Foam::solidDiscretisation::faceDisplacement
+(
+    const label patchi
+) const
+{
+    tmp<vectorField> tD(new vectorField);
+    tensorField F;
+    forcePatchKinematics(patchi, tD.ref(), F);
+    return tD;
+}
+
+
+void Foam::solidDiscretisation::holdLinearisation(const bool on)
+{
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (bcs_.kind(patchi) != solidBoundaries::FORCE)
+        {
+            continue;
+        }
+        if (!on)
+        {
+            bcs_.forcePatch(patchi).release();
+            continue;
+        }
+        // the fields hold the last evaluated iterate
+        const forceKinematics fk(*this, patchi, mesh_.time().deltaTValue());
+        const solidPatchKinematics& k = fk.k;
+        bcs_.forcePatch(patchi).linearise(k);
+    }
+}
+
+
+void Foam::solidDiscretisation::commit(const scalar dt)
+{
+    // The trial state of the current iterate
+    vectorField R(mesh_.nCells());
+    residual(R);
+
+    forAll(trialInternal_, facei)
+    {
+        CpInv_[facei] = trialInternal_[facei].CpInv;
+        epsilonPf_[facei] = trialInternal_[facei].epsilonP;
+    }
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        const solidBoundaries::patchKind kind = bcs_.kind(patchi);
+
+        if (kind == solidBoundaries::FORCE)
+        {
+            const forceKinematics fk(*this, patchi, dt);
+            const solidPatchKinematics& k = fk.k;
+            bcs_.forcePatch(patchi).commit(k);
+            forcePatchD0_[patchi] = k.D;
+        }
+        else if (kind != solidBoundaries::EMPTY)
+        {
+            symmTensorField& CpB = CpInv_.boundaryFieldRef()[patchi];
+            scalarField& epsB = epsilonPf_.boundaryFieldRef()[patchi];
+            const List<materialState>& trial = trialPatch_[patchi];
+            forAll(trial, i)
+            {
+                CpB[i] = trial[i].CpInv;
+                epsB[i] = trial[i].epsilonP;
+            }
+        }
+    }
+
+    D00_ = D0_;
+    D0_ = u_.primitiveField();
+    deltaT0_ = dt;
+}
+
+
+void Foam::solidDiscretisation::reportForcePatches() const
+{
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (bcs_.kind(patchi) != solidBoundaries::FORCE)
+        {
+            continue;
+        }
+        const forceKinematics fk(*this, patchi, deltaT0_);
+        const solidPatchKinematics& k = fk.k;
+        bcs_.forcePatch(patchi).report(k);
+    }
+}
+
+
+void Foam::solidDiscretisation::cellAverages
+(
+    symmTensorField& sigma,
+    scalarField& epsilonP
+) const
+{
+    // Internal faces carry the stress average (the boundary faces' stress
+    // is one-sided); the boundary faces with a history add to the plastic
+    // strain. The committed history is the end-of-step state, so the
+    // stress needs no further plastic correction.
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const scalarField& magSf = mesh_.magSf();
+
+    sigma.setSize(mesh_.nCells());
+    sigma = Zero;
+    epsilonP.setSize(mesh_.nCells());
+    epsilonP = Zero;
+    scalarField area(mesh_.nCells(), Zero);
+    scalarField areaInt(mesh_.nCells(), Zero);
+
+    forAll(own, facei)
+    {
+        const tensor F(internalFaceF(facei));
+        const materialState old(oldState(-1, facei));
+        materialState s;
+        const symmTensor sig(mechanicalLaw::cauchy(law_.stress(F, old, s), F));
+        const scalar a = magSf[facei];
+        for (const label c : {own[facei], nei[facei]})
+        {
+            sigma[c] += a*sig;
+            epsilonP[c] += a*old.epsilonP;
+            area[c] += a;
+            areaInt[c] += a;
+        }
+    }
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        const solidBoundaries::patchKind kind = bcs_.kind(patchi);
+        if (kind == solidBoundaries::FORCE || kind == solidBoundaries::EMPTY)
+        {
+            continue;
+        }
+        const labelUList& fc = mesh_.boundary()[patchi].faceCells();
+        const scalarField& a = mesh_.boundary()[patchi].magSf();
+        const scalarField& epsB = epsilonPf_.boundaryField()[patchi];
+        forAll(fc, i)
+        {
+            epsilonP[fc[i]] += a[i]*epsB[i];
+            area[fc[i]] += a[i];
+        }
+    }
+
+    forAll(sigma, celli)
+    {
+        sigma[celli] /= max(areaInt[celli], VSMALL);
+        epsilonP[celli] /= max(area[celli], VSMALL);
+    }
+}
+
+
+Foam::vector Foam::solidDiscretisation::reactionForce(const label patchi) const
+{
+    // The sum of P.S0 over the faces of a fixed patch
+    const fvPatch& p = mesh_.boundary()[patchi];
+    vector total(Zero);
+    forAll(p, i)
+    {
+        materialState s;
+        total += law_.stress(boundaryFaceF(patchi, i), oldState(patchi, i), s)
+            & p.Sf()[i];
+    }
+    return total;
+}
+
+
+// ************************************************************************* //

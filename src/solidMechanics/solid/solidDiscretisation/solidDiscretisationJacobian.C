@@ -1,0 +1,584 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+
+Description
+    The exact Jacobian M = -dR/du of the residual ([S21] in doc/theory.md):
+    every term of residual() differentiated through the gradient stencils,
+    the compact face difference, F-bar, the law's consistent tangent and the
+    force patches' tangents.
+
+\*---------------------------------------------------------------------------*/
+
+#include "solidDiscretisation.H"
+#include "HashTable.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+//- The columns of one face: for every cell Q that the face's deformation
+//  gradient depends on, dG_f/du_Q and dJbar/du_Q
+class faceColumns
+{
+public:
+
+    DynamicList<label> cells;
+    DynamicList<tensorDerivative> dG;
+    DynamicList<vector> dJ;
+
+    faceColumns() : cells(32), dG(32), dJ(32) {}
+
+    void clear()
+    {
+        cells.clear();
+        dG.clear();
+        dJ.clear();
+    }
+
+    //- Slot of global cell c (appended, zero, when new)
+    label slot(const label c)
+    {
+        forAll(cells, s)
+        {
+            if (cells[s] == c)
+            {
+                return s;
+            }
+        }
+        cells.append(c);
+        dG.append(zeroDerivative());
+        dJ.append(Zero);
+        return cells.size() - 1;
+    }
+
+    //- w L . dG_P/du and w dJ_P/du of the cell with stencil s and
+    //  cofactor cof = J F^-T of its deformation gradient
+    void addStencil
+    (
+        const gradientStencil& s,
+        const scalar w,
+        const tensor& L,
+        const tensor& cof
+    )
+    {
+        const label self = slot(s.cell);
+        addScaled(dG[self], w, leftMultiply(L, s.self));
+        dJ[self] += w*contract(cof, transposed(s.self));
+        forAll(s.cells, j)
+        {
+            const label q = slot(s.cells[j]);
+            addScaled(dG[q], 1, outerIdentity(w*(L & s.coeffs[j])));
+            dJ[q] += w*(cof & s.coeffs[j]);
+        }
+    }
+
+    //- c (x) u_cell: the compact difference along the face [S11]
+    void addCompact(const label cell, const vector& c)
+    {
+        addScaled(dG[slot(cell)], 1, outerIdentity(c));
+    }
+};
+
+
+//- J F^-T of F = I + G^T
+inline tensor cofactor(const tensor& G)
+{
+    const tensor F(tensor::I + G.T());
+    return det(F)*inv(F).T();
+}
+
+
+//- The 3 x 3 block d(A : dF) for a 3 x 9 flux tangent A: K_ik = A_i . dF_k
+inline tensor fluxBlock
+(
+    const Eigen::Matrix<double, 3, 9, Eigen::RowMajor>& A,
+    const tensorDerivative& dF
+)
+{
+    tensor K;
+    for (direction i = 0; i < 3; ++i)
+    {
+        for (direction k = 0; k < 3; ++k)
+        {
+            scalar s = 0;
+            for (direction b = 0; b < 9; ++b)
+            {
+                s += A(i, b)*dF[k][b];
+            }
+            K[3*i + k] = s;
+        }
+    }
+    return K;
+}
+
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::solidDiscretisation::addInternalFaces
+(
+    const tensorField& cof,
+    blockSparseMatrix& M
+) const
+{
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const vectorField& Sf = mesh_.Sf();
+    const vectorField& C = mesh_.C().primitiveField();
+    const vectorField& u = u_.primitiveField();
+    const scalarField& weights = mesh_.weights();
+    const globalIndex& numbering = grad_.cellNumbering();
+
+    faceColumns fc;
+    stressTangent dPdF;
+    materialState scratch;
+
+    forAll(own, facei)
+    {
+        const label P = own[facei];
+        const label N = nei[facei];
+        const scalar w = weights[facei];
+        const vector d(C[N] - C[P]);
+        const vector e(d/mag(d));
+        const tensor L(tensor::I - sqr(e));
+
+        const tensor F
+        (
+            volumetricAveraging::faceDefGrad(G_[P], G_[N], w, d, u[N] - u[P])
+        );
+        const scalar Jbar = w*J_[P] + (1 - w)*J_[N];
+
+        fc.clear();
+        fc.addStencil(grad_.stencil(P), w, L, cof[P]);
+        fc.addStencil(grad_.stencil(N), 1 - w, L, cof[N]);
+        fc.addCompact(numbering.toGlobal(N), e/mag(d));
+        fc.addCompact(numbering.toGlobal(P), -e/mag(d));
+
+        law_.stressAndTangent
+        (
+            fbar_.apply(F, Jbar), oldState(-1, facei), scratch, dPdF
+        );
+        const auto A = tangentDotS(dPdF, Sf[facei]);
+        const volumetricAveraging::linearisation lin(fbar_.linearise(F, Jbar));
+
+        forAll(fc.cells, q)
+        {
+            const tensor K
+            (
+                fluxBlock
+                (
+                    A,
+                    volumetricAveraging::derivative
+                    (
+                        lin, transposed(fc.dG[q]), fc.dJ[q]
+                    )
+                )
+            );
+            M.addBlock(P, fc.cells[q], -K);
+            M.addBlock(N, fc.cells[q], K);
+        }
+    }
+}
+
+
+void Foam::solidDiscretisation::addBoundaryFaces
+(
+    const label patchi,
+    const tensorField& cof,
+    blockSparseMatrix& M
+) const
+{
+    const fvPatch& p = mesh_.boundary()[patchi];
+    const labelUList& faceCells = p.faceCells();
+    const solidBoundaries::patchKind kind = bcs_.kind(patchi);
+    const globalIndex& numbering = grad_.cellNumbering();
+
+    faceColumns fc;
+    stressTangent dPdF;
+    materialState scratch;
+
+    forAll(faceCells, i)
+    {
+        const label P = faceCells[i];
+        const label globalP = numbering.toGlobal(P);
+        const gradientStencil& sP = grad_.stencil(P);
+        const vector& delta = patchDelta_[patchi][i];
+        const vector e(delta/mag(delta));
+        const tensor L(tensor::I - sqr(e));
+        const tensor& cofP = cof[P];
+
+        // F before volume averaging, Jbar, and the columns' dG_f, dJbar
+        tensor F(tensor::I);
+        scalar Jbar = J_[P];
+        fc.clear();
+
+        switch (kind)
+        {
+            case solidBoundaries::COUPLED:
+            {
+                const scalar w = p.weights()[i];
+                const tensor& GN = GNbr_[patchi][i];
+                F = volumetricAveraging::faceDefGrad
+                (
+                    G_[P], GN, w, delta, uNbr_[patchi][i] - u_[P]
+                );
+                Jbar = w*J_[P] + (1 - w)*det(tensor::I + GN.T());
+                fc.addStencil(sP, w, L, cofP);
+                fc.addStencil
+                (
+                    grad_.neighbourStencil(patchi, i), 1 - w, L, cofactor(GN)
+                );
+                fc.addCompact(grad_.neighbourCell(patchi, i), e/mag(delta));
+                fc.addCompact(globalP, -e/mag(delta));
+                break;
+            }
+            case solidBoundaries::FIXED:
+            {
+                F = volumetricAveraging::faceDefGrad
+                (
+                    G_[P], G_[P], 1, delta,
+                    D_.boundaryField()[patchi][i] - u_[P]
+                );
+                fc.addStencil(sP, 1, L, cofP);
+                fc.addCompact(globalP, -e/mag(delta));
+                break;
+            }
+            case solidBoundaries::SYMMETRY:
+            {
+                // dD = (I - n n).(u_P + delta.G_P) - u_P
+                const vector& n = patchNormal_[patchi][i];
+                const tensor Pn(tensor::I - sqr(n));
+                const vector uB(u_[P] + (delta & G_[P]));
+                F = volumetricAveraging::faceDefGrad
+                (
+                    G_[P], G_[P], 1, delta, (uB - (n & uB)*n) - u_[P]
+                );
+                fc.addStencil(sP, 1, L, cofP);
+                const vector c(e/mag(delta));
+                const label self = fc.slot(globalP);
+                addScaled
+                (
+                    fc.dG[self], 1,
+                    outerMatrix
+                    (
+                        c,
+                        (Pn & (tensor::I + dotDerivative(delta, sP.self)))
+                      - tensor::I
+                    )
+                );
+                forAll(sP.cells, j)
+                {
+                    addScaled
+                    (
+                        fc.dG[fc.slot(sP.cells[j])], 1,
+                        outerMatrix(c, (delta & sP.coeffs[j])*Pn)
+                    );
+                }
+                break;
+            }
+            case solidBoundaries::WEDGE:
+            {
+                // [S20] F_w = T F_P T^T, no volume averaging
+                F = tensor::I + G_[P].T();
+                fc.addStencil(sP, 1, tensor::I, cofP);
+                break;
+            }
+            default:
+                return;
+        }
+
+        const vector& S = p.Sf()[i];
+
+        if (kind == solidBoundaries::WEDGE)
+        {
+            const tensor& T = bcs_.wedgeRotation(patchi);
+            law_.stressAndTangent
+            (
+                T & F & T.T(), oldState(patchi, i), scratch, dPdF
+            );
+            const auto A = tangentDotS(dPdF, S);
+            forAll(fc.cells, q)
+            {
+                tensorDerivative dF(transposed(fc.dG[q]));
+                for (direction k = 0; k < 3; ++k)
+                {
+                    dF[k] = T & dF[k] & T.T();
+                }
+                M.addBlock(P, fc.cells[q], -fluxBlock(A, dF));
+            }
+            continue;
+        }
+
+        law_.stressAndTangent
+        (
+            fbar_.apply(F, Jbar), oldState(patchi, i), scratch, dPdF
+        );
+        Eigen::Matrix<double, 3, 9, Eigen::RowMajor> A(tangentDotS(dPdF, S));
+        if (kind == solidBoundaries::SYMMETRY)
+        {
+            // only the normal traction acts: (n n) . flux
+            const vector& n = patchNormal_[patchi][i];
+            Eigen::Matrix3d nn;
+            for (direction a = 0; a < 3; ++a)
+            {
+                for (direction b = 0; b < 3; ++b)
+                {
+                    nn(a, b) = n[a]*n[b];
+                }
+            }
+            A = nn*A;
+        }
+
+        const volumetricAveraging::linearisation lin(fbar_.linearise(F, Jbar));
+        forAll(fc.cells, q)
+        {
+            M.addBlock
+            (
+                P, fc.cells[q],
+                -fluxBlock
+                (
+                    A,
+                    volumetricAveraging::derivative
+                    (
+                        lin, transposed(fc.dG[q]), fc.dJ[q]
+                    )
+                )
+            );
+        }
+    }
+}
+
+
+void Foam::solidDiscretisation::addForcePatch
+(
+    const label patchi,
+    blockSparseMatrix& M
+) const
+{
+    const fvPatch& p = mesh_.boundary()[patchi];
+    const labelUList& faceCells = p.faceCells();
+    const vectorField& d = patchDelta_[patchi];
+    const solidForceBoundary& patch = bcs_.forcePatch(patchi);
+
+    const forceKinematics fk(*this, patchi, mesh_.time().deltaTValue());
+    const solidPatchKinematics& k = fk.k;
+
+    List<faceForceTangent> df;
+    patch.tangent(k, df);
+
+    // Face displacement D_f = u_P + d.G_P and F = I + G_P^T: for a column
+    // with dG_P/du_Q, dD_f/du_Q = delta_PQ I + d.dG_P/du_Q
+    auto dDface = [](const vector& d, const tensorDerivative& dG, bool self)
+    {
+        return dotDerivative(d, dG) + (self ? tensor::I : tensor::zero);
+    };
+    auto forceBlock = [](const faceForceTangent& t, const tensor& dD,
+        const tensorDerivative& dG)
+    {
+        tensor K(t.dfdD & dD);
+        for (direction i = 0; i < 3; ++i)
+        {
+            for (direction kk = 0; kk < 3; ++kk)
+            {
+                K[3*i + kk] += t.dfdF[i] && dG[kk].T();
+            }
+        }
+        return K;
+    };
+
+    forAll(faceCells, i)
+    {
+        const label P = faceCells[i];
+        const gradientStencil& s = grad_.stencil(P);
+        M.addBlock
+        (
+            P, s.cell,
+            -forceBlock(df[i], dDface(d[i], s.self, true), s.self)
+        );
+        forAll(s.cells, j)
+        {
+            const tensorDerivative dG(outerIdentity(s.coeffs[j]));
+            M.addBlock
+            (
+                P, s.cells[j],
+                -forceBlock(df[i], dDface(d[i], dG, false), dG)
+            );
+        }
+    }
+
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::labelListList Foam::solidDiscretisation::jacobianPattern() const
+{
+    // A face's flux depends on the stencils of the two cells it joins (the
+    // patch-mean couplings are kept out: meanCouplings())
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    List<DynamicList<label>> cols(mesh_.nCells());
+
+    auto addStencil = [&](const label row, const gradientStencil& s)
+    {
+        cols[row].append(s.cell);
+        cols[row].append(s.cells);
+    };
+
+    forAll(cols, P)
+    {
+        addStencil(P, grad_.stencil(P));
+    }
+    forAll(own, facei)
+    {
+        addStencil(own[facei], grad_.stencil(nei[facei]));
+        addStencil(nei[facei], grad_.stencil(own[facei]));
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
+        const solidBoundaries::patchKind kind = bcs_.kind(patchi);
+        if (kind == solidBoundaries::COUPLED)
+        {
+            forAll(faceCells, i)
+            {
+                addStencil(faceCells[i], grad_.neighbourStencil(patchi, i));
+            }
+        }
+    }
+
+    labelListList pattern(cols.size());
+    forAll(cols, P)
+    {
+        pattern[P].transfer(cols[P]);
+    }
+    return pattern;
+}
+
+
+void Foam::solidDiscretisation::jacobian(blockSparseMatrix& M) const
+{
+    M.zero();
+
+    // dJ_P = cof(F_P) : dF_P, cof(F) = J F^-T, once per cell
+    tensorField cof(G_.size());
+    forAll(cof, celli)
+    {
+        cof[celli] = cofactor(G_[celli]);
+    }
+
+    addInternalFaces(cof, M);
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        switch (bcs_.kind(patchi))
+        {
+            case solidBoundaries::EMPTY:
+                break;
+            case solidBoundaries::FORCE:
+                addForcePatch(patchi, M);
+                break;
+            default:
+                addBoundaryFaces(patchi, cof, M);
+                break;
+        }
+    }
+
+    // [S13] inertia: R -= rho V 2/(dt (dt + dt0)) u + ...
+    if (inertia_)
+    {
+        const scalar dt = mesh_.time().deltaTValue();
+        const scalar c = 2*inertiaDensity_/(dt*(dt + deltaT0_));
+        const scalarField& V = mesh_.V();
+        const globalIndex& numbering = grad_.cellNumbering();
+        forAll(V, P)
+        {
+            M.addBlock(P, numbering.toGlobal(P), (c*V[P])*tensor::I);
+        }
+    }
+}
+
+
+void Foam::solidDiscretisation::meanCouplings
+(
+    List<vectorField>& U,
+    List<vectorField>& V
+) const
+{
+    // [S21] f_i depends on <D> = sum_j |S0_j| D_j / sum_j |S0_j| [S12b]:
+    // M -= C_i . d<D>/du_Q with C_i = df_i/d<D>, i.e. M += sum_a u_a v_a^T,
+    // u_a = -C_i e_a at the rows of the patch's cells, v_a = e_a . d<D>/du
+    // at the columns; d<D>/du_Q is gathered over all processors
+    U.clear();
+    V.clear();
+    const globalIndex& numbering = grad_.cellNumbering();
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        if
+        (
+            bcs_.kind(patchi) != solidBoundaries::FORCE
+         || !bcs_.forcePatch(patchi).couplesToMeanDisplacement()
+        )
+        {
+            continue;
+        }
+        const fvPatch& p = mesh_.boundary()[patchi];
+        const labelUList& faceCells = p.faceCells();
+        const vectorField& d = patchDelta_[patchi];
+
+        const forceKinematics fk(*this, patchi, mesh_.time().deltaTValue());
+        const solidPatchKinematics& k = fk.k;
+        tensorField C(faceCells.size());
+        bcs_.forcePatch(patchi).meanDisplacementTangent(k, C);
+
+        // d<D>/du_Q, D_f = u_P + d.G_P
+        const scalarField magS(mag(p.Sf()));
+        const scalar area = gSum(magS);
+        HashTable<tensor, label, Hash<label>> dMean(64);
+        forAll(faceCells, i)
+        {
+            const gradientStencil& s = grad_.stencil(faceCells[i]);
+            const scalar wi = magS[i]/area;
+            dMean(s.cell, tensor::zero) +=
+                wi*(tensor::I + dotDerivative(d[i], s.self));
+            forAll(s.cells, j)
+            {
+                dMean(s.cells[j], tensor::zero) += (wi*(d[i] & s.coeffs[j]))*tensor::I;
+            }
+        }
+        Pstream::mapCombineGather(dMean, plusEqOp<tensor>());
+        Pstream::mapCombineScatter(dMean);
+
+        for (direction a = 0; a < 3; ++a)
+        {
+            vectorField u(mesh_.nCells(), Zero);
+            scalar uMax = 0;
+            forAll(faceCells, i)
+            {
+                u[faceCells[i]] -= C[i].col(a);
+                uMax = max(uMax, mag(C[i].col(a)));
+            }
+            if (returnReduce(uMax, maxOp<scalar>()) == 0)
+            {
+                continue;
+            }
+            vectorField v(mesh_.nCells(), Zero);
+            forAllConstIters(dMean, iter)
+            {
+                if (numbering.isLocal(iter.key()))
+                {
+                    v[numbering.toLocal(iter.key())] = iter.val().row(a);
+                }
+            }
+            U.append(u);
+            V.append(v);
+        }
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,130 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "timeStepController.H"
+#include "OStringStream.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::timeStepController::timeStepController
+(
+    const dictionary& dict,
+    const scalar userDeltaT
+)
+:
+    userDeltaT_(userDeltaT),
+    maxCutBacks_(dict.lookupOrDefault<label>("maxCutBacks", 10)),
+    cutBackFactor_(dict.lookupOrDefault<scalar>("cutBackFactor", 0.5)),
+    growth_(dict.lookupOrDefault<scalar>("timeStepGrowth", 1.5)),
+    minDeltaTRatio_(dict.lookupOrDefault<scalar>("minDeltaTRatio", 1e-6)),
+    predictor_(dict.lookupOrDefault<bool>("predictor", true)),
+    deltaT_(userDeltaT),
+    nFailures_(0),
+    retrying_(false)
+{
+    if
+    (
+        maxCutBacks_ < 0 || !(cutBackFactor_ > 0) || !(cutBackFactor_ < 1)
+     || !(growth_ >= 1) || !(minDeltaTRatio_ > 0) || !(userDeltaT > 0)
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "Dictionary " << dict.name() << ": expected maxCutBacks >= 0"
+            << " (got " << maxCutBacks_ << "), 0 < cutBackFactor < 1 (got "
+            << cutBackFactor_ << "), timeStepGrowth >= 1 (got " << growth_
+            << "), minDeltaTRatio > 0 (got " << minDeltaTRatio_
+            << ") and deltaT > 0 in controlDict (got " << userDeltaT << ")"
+            << nl << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::timeStepController::action Foam::timeStepController::converged()
+{
+    retrying_ = false;
+    nFailures_ = 0;
+    deltaT_ = min(growth_*deltaT_, userDeltaT_);
+    return ACCEPT;
+}
+
+
+Foam::timeStepController::action Foam::timeStepController::failed
+(
+    const scalar dt
+)
+{
+    // The time extrapolation misleads at a kink of the load path (a hold
+    // after a ramp): the same step is tried once from the last solution
+    if (predict())
+    {
+        retrying_ = true;
+        return RETRY;
+    }
+    retrying_ = false;
+
+    ++nFailures_;
+    const bool tooSmall = cutBackFactor_*dt < minDeltaTRatio_*userDeltaT_;
+    if (nFailures_ > maxCutBacks_ || tooSmall)
+    {
+        return STOP;
+    }
+    deltaT_ = cutBackFactor_*dt;
+    return CUT_BACK;
+}
+
+
+Foam::string Foam::timeStepController::stopMessage
+(
+    const scalar failedTime,
+    const scalar failedDeltaT,
+    const string& reason,
+    const scalar t0,
+    const bool t0IsStartTime
+) const
+{
+    // The form 'last converged time, T, is written' is parsed by the test
+    // suite (tests/bin/stressTools.py); nFailures counts the failed
+    // attempts, one more than the cut-backs made
+    OStringStream os;
+    os  << "The step to time " << failedTime << " did not converge after "
+        << nFailures_ - 1 << " cut-backs of the time step (last deltaT "
+        << failedDeltaT << " s, reason: " << reason.c_str() << ")." << nl
+        << "The last converged time, " << t0 << ", is written"
+        << (t0IsStartTime ? " (the start time: no step converged);" : ";")
+        << " check the loading, the boundary conditions and the solid"
+        << " controls in system/fvSolution";
+    return os.str();
+}
+
+
+Foam::dictionary Foam::timeStepController::state() const
+{
+    dictionary dict;
+    dict.add("deltaT", deltaT_);
+    dict.add("userDeltaT", userDeltaT_);
+    return dict;
+}
+
+
+bool Foam::timeStepController::setState(const dictionary& dict)
+{
+    nFailures_ = 0;
+    retrying_ = false;
+
+    // A deltaT changed in controlDict since the write is the user's new
+    // step: it starts there
+    if (dict.lookupOrDefault<scalar>("userDeltaT", -1) != userDeltaT_)
+    {
+        deltaT_ = userDeltaT_;
+        return false;
+    }
+    deltaT_ = dict.get<scalar>("deltaT");
+    return true;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,425 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+
+Description
+    The 'petsc' linear solver (src/linearSolversPetsc) on elastic block
+    operators built without a mesh (tests/unit/include/elasticBlockOperator.H:
+    Q1 elasticity on the grid of cell centres, E = 200 GPa, h = 1 cm),
+    selected through linearSolver::New as the solver application does (the
+    library is loaded on demand: this program does not link it).
+
+    Without arguments (unit test, serial, with OpenFOAM's floating-point
+    traps on):
+      - 2-D 24 x 24 and 3-D 10^3 symmetric positive definite operators, and
+        a non-symmetric 3-D one (upwind term 0.5): GMRES + BoomerAMG,
+        CG + GAMG with the rigid-body near-null space, GMRES + GAMG (the
+        default), BiCGStab + ILU, MUMPS: converged, true relative residual
+        |b - M x|/|b| below relTol (1e-10, the contract of solve()), the
+        solution against the known one and against eigenLU (sparse LU) to
+        the tolerances below;
+      - values re-assembled with the pattern kept (M doubled): update()
+        and solve() give half the known solution;
+      - errors: unknown keyword, unknown keyword value, a bad raw option
+        value (FatalIOError at construction); a combination PETSc cannot
+        set up (GAMG on a BAIJ matrix: FatalIOError at update(), not a
+        failed step; BAIJ with MUMPS solves); a misspelt raw option and an
+        unused PETSC_OPTIONS entry under the prefix (error after the first
+        solve); PETSC_OPTIONS overriding the dictionary; a zero row with
+        MUMPS and with ILU (update() false or solve() not converged with
+        the reason, then a good matrix is solved again); maxIterations
+        reached (not converged, reason names maxIterations).
+
+    With -report <file> (argList; serial, or -parallel under mpirun): the
+    3-D (or -dimension 2) operator of -cells n per direction solved with
+    each preconditioner of -solvers; writes per solver the Krylov
+    iterations, relative residual, max error against the known solution,
+    set-up and solve times (wall, and CPU of the slowest processor) and the
+    peak resident memory (sum over processors). Used by the case test
+    parallelLinearSolvers and by tests/benchmarks/linearSolvers.
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "linearSolver.H"
+#include "elasticBlockOperator.H"
+#include "unitTest.H"
+#include "sigFpe.H"
+#include "solverRuns.H"
+#include "reportMode.H"
+#include <cstdlib>
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * Helpers  * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// Tolerances on the max error against the known solution, at relTol 1e-10:
+// 10x the largest measured, 2.3e-8 (2-D, BoomerAMG) for the Krylov solvers
+// (about the condition number times relTol) and 2.8e-14 (2-D, MUMPS) for
+// the direct ones
+const scalar tolKrylov = 3e-7;
+const scalar tolDirect = 3e-13;
+
+//- Converged to relTol, and within tol of the known solution
+void checkSolved
+(
+    const std::string& name,
+    const outcome& o,
+    const scalar tol,
+    const scalar relTol = 1e-10
+)
+{
+    unitTest::checkTrue
+    (
+        name + ": set up and converged", o.updated && o.p.converged
+    );
+    // 1 % over relTol: the residual PETSc monitors is the recursive one
+    unitTest::checkBelow
+    (
+        name + ": |b - M x|/|b|", o.p.relativeResidual, 1.01*relTol
+    );
+    unitTest::checkBelow(name + ": max error vs x*", o.error, tol);
+}
+
+
+//- FatalIOError / FatalError expected from f
+template<class Fn>
+bool throwsError(Fn f)
+{
+    try
+    {
+        f();
+    }
+    catch (const Foam::error& e)
+    {
+        Info<< "    (expected error: " << e.message().c_str() << ")" << endl;
+        return true;
+    }
+    return false;
+}
+
+
+// * * * * * * * * * * * * * * * * Unit tests  * * * * * * * * * * * * * * //
+
+//- Every solver of 'solvers' (ksp and preconditioner) on M: converged to
+//  relTol, against the known solution and against eigenLU (sparse LU);
+//  the outcomes in the order of 'solvers'
+List<outcome> checkSolvers
+(
+    const std::string& name,
+    const blockSparseMatrix& M,
+    const std::vector<std::pair<std::string, std::string>>& solvers
+)
+{
+    const outcome lu = solveWith("type eigenLU;", M);
+    unitTest::checkBelow
+    (
+        name + " eigenLU: max error vs x*", lu.error, tolDirect
+    );
+
+    List<outcome> outcomes;
+    for (const auto& s : solvers)
+    {
+        const std::string entries = s.first.empty() && s.second.empty()
+          ? "" : "type petsc; ksp " + s.first + "; preconditioner "
+            + s.second + ";";
+        const std::string label = name + " "
+          + (entries.empty() ? "default" : s.first + " + " + s.second);
+        const scalar tol = s.second == "mumps" ? tolDirect : tolKrylov;
+        outcomes.append(solveWith(entries, M));
+        checkSolved(label, outcomes.last(), tol);
+        unitTest::checkBelow
+        (
+            label + " vs eigenLU", maxError(outcomes.last().x, lu.x), tol
+        );
+    }
+    return outcomes;
+}
+
+
+void symmetric()
+{
+    Info<< "2-D, 24 x 24 cells, nu = 0.3" << endl;
+    const eo::grid g2{24, 24, 1, 0.01};
+    autoPtr<blockSparseMatrix> M2 = eo::build(g2, 2e11, 0.3);
+    const List<outcome> o2 = checkSolvers
+    (
+        "2-D", M2(),
+        {{"gmres", "boomerAMG"}, {"cg", "gamg"}, {"gmres", "mumps"}}
+    );
+    unitTest::checkBelow
+    (
+        "2-D mumps: Krylov iterations", o2[2].p.iterations, 1
+    );
+
+    Info<< "3-D, 10^3 cells, nu = 0.3" << endl;
+    const eo::grid g3{10, 10, 10, 0.01};
+    autoPtr<blockSparseMatrix> M3 = eo::build(g3, 2e11, 0.3);
+    const List<outcome> o3 = checkSolvers
+    (
+        "3-D", M3(),
+        {
+            {"", ""}, {"gmres", "boomerAMG"}, {"cg", "gamg"}, {"gmres", "ml"},
+            {"gmres", "mumps"}
+        }
+    );
+    unitTest::checkTrue
+    (
+        "3-D default: petsc with gamg",
+        o3[0].description.find("gamg") != std::string::npos
+    );
+    const outcome& gamg = o3[2];
+
+    // GAMG's near-null space: the rigid-body modes of the coordinates
+    // against its default (the translations, from the block size)
+    {
+        autoPtr<blockSparseMatrix> N = eo::build(g3, 2e11, 0.3);
+        N->setCoordinates(vectorField());
+        const outcome translations =
+            solveWith("type petsc; ksp cg; preconditioner gamg;", N());
+        // Measured 17 against 30
+        unitTest::checkBelow
+        (
+            "3-D cg + gamg: iterations with the rigid-body modes over those"
+            " with the translations only",
+            scalar(gamg.p.iterations)/translations.p.iterations, 0.75
+        );
+    }
+
+    // Pattern kept, values re-assembled: M doubled, same b -> x*/2
+    Info<< "3-D, values doubled after the first solve" << endl;
+    {
+        solverDict d("type petsc; ksp cg; preconditioner gamg;");
+        autoPtr<linearSolver> s = linearSolver::New(d(), M3());
+        const Eigen::VectorXd b = eo::rightHandSide(M3());
+        Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
+        s->update();
+        s->solve(b, x, 1e-10);
+
+        for (label i = 0; i < M3->values().size(); ++i)
+        {
+            const_cast<scalarList&>(M3->values())[i] *= 2;
+        }
+        unitTest::checkTrue("doubled: update()", s->update());
+        const linearSolver::performance p = s->solve(b, x, 1e-10);
+        unitTest::checkTrue("doubled: converged", p.converged);
+        unitTest::checkBelow
+        (
+            "doubled: max error vs x*/2",
+            maxError(2*x, eo::exactSolution(M3())), tolKrylov
+        );
+    }
+}
+
+
+void nonSymmetric()
+{
+    Info<< "3-D non-symmetric (upwind term 0.5), 10^3 cells" << endl;
+    const eo::grid g3{10, 10, 10, 0.01};
+    autoPtr<blockSparseMatrix> M = eo::build(g3, 2e11, 0.3, 0.5);
+    const Eigen::SparseMatrix<double> A = M->eigenMatrix();
+    const Eigen::SparseMatrix<double> At = A.transpose();
+    unitTest::checkBelow
+    (
+        "non-symmetric: |M - M^T|/|M| above 0.01 (so negated)",
+        -(A - At).norm()/A.norm(), -0.01
+    );
+
+    checkSolvers
+    (
+        "non-symmetric", M(),
+        {
+            {"gmres", "boomerAMG"}, {"gmres", "gamg"}, {"bcgs", "ilu"},
+            {"gmres", "mumps"}
+        }
+    );
+}
+
+
+void errors()
+{
+    const eo::grid g{8, 8, 1, 0.01};
+    autoPtr<blockSparseMatrix> M = eo::build(g, 2e11, 0.3);
+
+    FatalIOError.throwExceptions();
+    FatalError.throwExceptions();
+
+    Info<< "Input errors" << endl;
+    unitTest::checkTrue
+    (
+        "unknown keyword -> FatalIOError",
+        throwsError([&]{ solveWith("type petsc; precondtioner gamg;", M()); })
+    );
+    unitTest::checkTrue
+    (
+        "unknown preconditioner -> FatalIOError",
+        throwsError([&]{ solveWith("type petsc; preconditioner amg;", M()); })
+    );
+    unitTest::checkTrue
+    (
+        "unknown ksp -> FatalIOError",
+        throwsError([&]{ solveWith("type petsc; ksp minres2;", M()); })
+    );
+    unitTest::checkTrue
+    (
+        "bad raw option value -> FatalIOError",
+        throwsError
+        ([&]{ solveWith("type petsc; options { pc_type nonsense; }", M()); })
+    );
+    unitTest::checkTrue
+    (
+        "misspelt raw option -> FatalIOError after the first solve",
+        throwsError
+        ([&]{
+            solveWith("type petsc; options { ksp_gmres_restrat 40; }", M());
+        })
+    );
+    unitTest::checkTrue
+    (
+        "raw option of another preconditioner -> FatalIOError",
+        throwsError
+        ([&]{
+            solveWith
+            (
+                "type petsc; preconditioner gamg;"
+                "options { pc_hypre_boomeramg_max_iter 2; }", M()
+            );
+        })
+    );
+    unitTest::checkTrue
+    (
+        "a configuration PETSc cannot set up (gamg on BAIJ) -> FatalIOError",
+        throwsError
+        ([&]{
+            solveWith
+            (
+                "type petsc; preconditioner gamg; options { mat_type baij; }",
+                M()
+            );
+        })
+    );
+    checkSolved
+    (
+        "BAIJ matrix, mumps",
+        solveWith
+        (
+            "type petsc; preconditioner mumps; options { mat_type baij; }",
+            M()
+        ),
+        tolDirect
+    );
+    unitTest::checkTrue
+    (
+        "unused PETSC_OPTIONS entry under the prefix -> FatalError",
+        throwsError
+        ([&]{ solveWith("type petsc; prefix envunused_;", M()); })
+    );
+    {
+        const outcome o = solveWith
+        (
+            "type petsc; prefix envwins_; ksp gmres;"
+            "options { ksp_type bcgs; }", M()
+        );
+        unitTest::checkTrue
+        (
+            "PETSC_OPTIONS -envwins_ksp_type cg overrides the dictionary",
+            o.description.find("Krylov method cg") != std::string::npos
+        );
+        checkSolved("env-selected cg", o, tolKrylov);
+    }
+    {
+        const outcome o = solveWith
+        (
+            "type petsc; preconditioner jacobi; maxIterations 3;", M()
+        );
+        unitTest::checkTrue
+        (
+            "maxIterations 3: not converged, reason names maxIterations",
+            !o.p.converged && o.p.iterations == 3
+         && o.p.reason.find("maxIterations") != std::string::npos
+        );
+    }
+
+    Info<< "Singular matrix (a zero row)" << endl;
+    for (const char* pc : {"mumps", "ilu"})
+    {
+        solverDict d(std::string("type petsc; preconditioner ") + pc + ";");
+        autoPtr<linearSolver> s = linearSolver::New(d(), M());
+        scalarList& v = const_cast<scalarList&>(M->values());
+        const scalarList good(v);
+        const Eigen::VectorXd b = eo::rightHandSide(M());
+        const label r = 5, nc = M->nComponents();
+        const label first = M->rowStart()[r]*nc*nc;
+        for (label i = first; i < M->rowStart()[r + 1]*nc*nc; ++i)
+        {
+            v[i] = 0;
+        }
+        const bool updated = s->update();
+        Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
+        const linearSolver::performance p = s->solve(b, x, 1e-10);
+        Info<< "    " << pc << ": update " << updated << ", converged "
+            << p.converged << ", reason: " << p.reason.c_str() << endl;
+        unitTest::checkTrue
+        (
+            std::string(pc) + ", zero row: failure reported with a reason",
+            (!updated || !p.converged) && !p.converged && p.reason.size()
+        );
+
+        v = good;
+        unitTest::checkTrue
+        (
+            std::string(pc) + ": good matrix set up again", s->update()
+        );
+        x.setZero();
+        const linearSolver::performance q = s->solve(b, x, 1e-10);
+        Info<< "    " << pc << " again: converged " << q.converged << ", "
+            << q.iterations << " iterations, residual " << q.relativeResidual
+            << ", reason: " << q.reason.c_str() << endl;
+        unitTest::checkTrue
+        (
+            std::string(pc) + ": good matrix solved again",
+            q.converged
+         && maxError(x, eo::exactSolution(M())) < tolKrylov
+        );
+    }
+
+    FatalIOError.dontThrowExceptions();
+    FatalError.dontThrowExceptions();
+}
+
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * Main * * * * * * * * * * * * * * * * //
+
+int main(int argc, char* argv[])
+{
+    if (argc > 1)
+    {
+        return report(argc, argv);
+    }
+
+    // As in a solver: OpenFOAM's floating-point traps on
+    sigFpe::set(false);
+    unitTest::checkTrue("floating-point traps active", sigFpe::active());
+
+    // Read by PetscInitialize, when the first petsc solver is built
+    setenv
+    (
+        "PETSC_OPTIONS",
+        "-envwins_ksp_type cg -envunused_pc_gamg_threshhold 0.1", 1
+    );
+
+    symmetric();
+    nonSymmetric();
+    errors();
+
+    return unitTest::exitCode();
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,242 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+
+Description
+    Newton's method on small nonlinear systems without a mesh
+    (doc/theory.md [S14]-[S16]):
+      - a stiffening spring chain R = b - K x - c x^3 (exact Jacobian):
+        converges to the solution, quadratically (|R_k+1| <= C |R_k|^2);
+      - the same, Jacobian-free: converges, with Krylov iterations;
+      - R = -atan(x) from x0 = 3, where the full Newton step diverges: the
+        line search brings it to 0;
+      - a singular Jacobian: the solve fails with the system's reason;
+      - a residual with a noise floor of 1e-6: converges only with
+        acceptableForceTolerance, and says so.
+
+\*---------------------------------------------------------------------------*/
+
+#include "unitTest.H"
+#include "newtonSolver.H"
+#include "IStringStream.H"
+
+using namespace Foam;
+using namespace unitTest;
+
+//- A small system with a dense Jacobian; which one by 'kind'
+class testSystem
+:
+    public nonlinearSystem
+{
+public:
+
+    enum kindType { SPRINGS, ATAN, SINGULAR, NOISY };
+
+    kindType kind;
+    Eigen::MatrixXd K;
+    Eigen::VectorXd b;
+    Eigen::MatrixXd M;
+    List<scalar> jacobianResiduals;
+
+    explicit testSystem(const kindType k)
+    :
+        kind(k)
+    {
+        const label n = (k == SPRINGS) ? 3 : 1;
+        K.setZero(n, n);
+        b.setZero(n);
+        if (k == SPRINGS)
+        {
+            // a chain fixed at one end: SPD
+            K << 2, -1, 0,   -1, 2, -1,   0, -1, 1;
+            b << 0, 0, 5;
+        }
+    }
+
+    virtual label nDofs() const { return b.size(); }
+
+    virtual void residual(const Eigen::VectorXd& x, Eigen::VectorXd& R)
+    {
+        switch (kind)
+        {
+            case SPRINGS:
+                R = b - K*x - 0.5*x.array().cube().matrix();
+                break;
+            case ATAN:
+                R.resize(1);
+                R(0) = -std::atan(x(0));
+                break;
+            case SINGULAR:
+                R.resize(1);
+                R(0) = 1 - sqr(x(0));
+                break;
+            case NOISY:
+                R.resize(1);
+                R(0) = -(x(0) - 1) + 1e-6*std::sin(1e9*x(0));
+                break;
+        }
+    }
+
+    virtual scalar forceScale() const { return 1; }
+
+    virtual scalar typicalDisplacement() const { return 1; }
+
+    virtual bool updateJacobian(const Eigen::VectorXd& x)
+    {
+        Eigen::VectorXd R;
+        residual(x, R);
+        jacobianResiduals.append(R.norm());
+        switch (kind)
+        {
+            case SPRINGS:
+                M = K;
+                M.diagonal() += 1.5*x.array().square().matrix();
+                return true;
+            case ATAN:
+                M.setConstant(1, 1, 1/(1 + sqr(x(0))));
+                return true;
+            case SINGULAR:
+                // 2 x: singular at the start x = 0
+                return x(0) != 0;
+            case NOISY:
+                M.setConstant(1, 1, 1);
+                return true;
+        }
+        return false;
+    }
+
+    virtual string failure() const
+    {
+        return "test: singular";
+    }
+
+    virtual linearSolver::performance solveJacobian
+    (
+        const Eigen::VectorXd& r,
+        Eigen::VectorXd& dx,
+        const scalar relTol
+    )
+    {
+        dx = M.lu().solve(r);
+        linearSolver::performance p;
+        p.converged = true;
+        return p;
+    }
+};
+
+
+static dictionary controls(const char* text)
+{
+    IStringStream is(text);
+    return dictionary(is);
+}
+
+
+int main()
+{
+    Info<< "Stiffening springs, exact Newton" << endl;
+    {
+        testSystem sys(testSystem::SPRINGS);
+        newtonSolver newton
+        (
+            controls("forceTolerance 1e-12; displacementTolerance 1e-10;")
+        );
+        Eigen::VectorXd x(Eigen::VectorXd::Zero(3)), x0(x);
+        const newtonSolver::result res = newton.solve(sys, x, x0);
+        Eigen::VectorXd R;
+        sys.residual(x, R);
+        checkTrue("converged", res.converged);
+        checkBelow("|R| at the solution", R.norm(), 1e-12);
+        checkBelow("Newton iterations", res.newtonIterations, 12);
+        checkAbs("no Krylov iterations (direct)", res.krylovIterations, 0, 0);
+
+        // quadratic: |R_k+1|/|R_k|^2 bounded over the last iterations
+        const List<scalar>& r = sys.jacobianResiduals;
+        scalar worst = 0;
+        for (label k = r.size() - 3; k + 1 < r.size(); ++k)
+        {
+            if (k >= 0 && r[k] < 1e-1 && r[k + 1] > 1e-14)
+            {
+                worst = max(worst, r[k + 1]/sqr(r[k]));
+            }
+        }
+        Info<< "    residuals at the Jacobians: " << r << endl;
+        checkBelow("quadratic rate |R_k+1|/|R_k|^2", worst, 10);
+    }
+
+    Info<< "Stiffening springs, Jacobian-free" << endl;
+    {
+        testSystem sys(testSystem::SPRINGS);
+        newtonSolver newton
+        (
+            controls
+            (
+                "newtonMethod jacobianFree; forceTolerance 1e-10;"
+                " displacementTolerance 1e-8; krylovRefresh 100;"
+            )
+        );
+        Eigen::VectorXd x(Eigen::VectorXd::Zero(3)), x0(x);
+        const newtonSolver::result res = newton.solve(sys, x, x0);
+        Eigen::VectorXd R;
+        sys.residual(x, R);
+        checkTrue("converged", res.converged);
+        checkBelow("|R| at the solution", R.norm(), 1e-10);
+        checkTrue("Krylov iterations counted", res.krylovIterations > 0);
+        checkAbs
+        (
+            "one Jacobian (refreshed only at the start)",
+            sys.jacobianResiduals.size(), 1, 0
+        );
+    }
+
+    Info<< "atan from x0 = 3: the line search" << endl;
+    {
+        testSystem sys(testSystem::ATAN);
+        newtonSolver newton(controls("forceTolerance 1e-12;"));
+        Eigen::VectorXd x(Eigen::VectorXd::Constant(1, 3)), x0(x);
+        const newtonSolver::result res = newton.solve(sys, x, x0);
+        checkTrue("converged", res.converged);
+        checkAbs("root 0", x(0), 0, 1e-12);
+    }
+
+    Info<< "Singular Jacobian" << endl;
+    {
+        testSystem sys(testSystem::SINGULAR);
+        newtonSolver newton(controls(""));
+        Eigen::VectorXd x(Eigen::VectorXd::Zero(1)), x0(x);
+        const newtonSolver::result res = newton.solve(sys, x, x0);
+        checkTrue("not converged", !res.converged);
+        checkTrue("the system's reason", res.reason == "test: singular");
+    }
+
+    Info<< "Noise floor 1e-6" << endl;
+    {
+        testSystem sys(testSystem::NOISY);
+        newtonSolver strict
+        (
+            controls("forceTolerance 1e-9; maxNewtonIterations 15;")
+        );
+        Eigen::VectorXd x(Eigen::VectorXd::Zero(1)), x0(x);
+        const newtonSolver::result a = strict.solve(sys, x, x0);
+        checkTrue("fails without acceptableForceTolerance", !a.converged);
+
+        newtonSolver lenient
+        (
+            controls
+            (
+                "forceTolerance 1e-9; maxNewtonIterations 15;"
+                " acceptableForceTolerance 1e-5; stallIterations 3;"
+            )
+        );
+        x.setZero();
+        const newtonSolver::result b = lenient.solve(sys, x, x0);
+        checkTrue("accepted below 1e-5", b.converged && b.accepted);
+        checkBelow("accepted residual", b.forceResidual, 1e-5);
+        checkAbs("near the root", x(0), 1, 1e-5);
+    }
+
+    return exitCode();
+}
+
+
+// ************************************************************************* //
