@@ -161,20 +161,6 @@ void Foam::linearSolvers::petscSolver::createKsp()
             setDefault("pc_hypre_boomeramg_P_max", "4");
         }
     }
-    else if (pcName_ == "gamg")
-    {
-        // Smoother: Richardson with SOR instead of PETSc's Chebyshev with
-        // point Jacobi. Chebyshev rests on an eigenvalue estimate that
-        // assumes a symmetric positive definite operator; the Jacobian of
-        // sliding friction is not symmetric and GMRES with the Chebyshev
-        // smoother stalled at relative residuals 0.1-1 on the ring
-        // compression test from its first load step (Coulomb mu 0.2, 96
-        // to 2 688 cells); with SOR every solve converged (first 3 steps
-        // of the quarter ring, 2 688 cells: 145 Krylov iterations in all,
-        // 2.1 s CPU; doc/performance.md section 12)
-        setDefault("mg_levels_ksp_type", "richardson");
-        setDefault("mg_levels_pc_type", "sor");
-    }
     else if (pcName_ == "mumps")
     {
         check
