@@ -19,6 +19,9 @@ Description
 #include "unitTest.H"
 #include "newtonSolver.H"
 #include "IStringStream.H"
+#include "eigenVector.H"
+#include <fenv.h>
+#include <limits>
 
 using namespace Foam;
 using namespace unitTest;
@@ -134,6 +137,24 @@ static dictionary controls(const char* text)
 
 int main()
 {
+    Info<< "Finiteness tests under trapped floating-point exceptions" << endl;
+    {
+        // As OpenFOAM's FOAM_SIGFPE traps them: an infinite correction
+        // from a failed linear solve must make gFinite false (the step is
+        // cut back), not raise SIGFPE (Eigen's allFinite() computes
+        // inf - inf)
+        feenableexcept(FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW);
+        Eigen::VectorXd v(Eigen::VectorXd::Ones(4));
+        checkTrue("finite vector", gFinite(v));
+        v(2) = std::numeric_limits<double>::infinity();
+        checkTrue("an infinite entry is caught", !gFinite(v));
+        v(2) = -std::numeric_limits<double>::infinity();
+        checkTrue("a negative infinite entry is caught", !gFinite(v));
+        v(2) = std::numeric_limits<double>::quiet_NaN();
+        checkTrue("a NaN entry is caught", !gFinite(v));
+        fedisableexcept(FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW);
+    }
+
     Info<< "Stiffening springs, exact Newton" << endl;
     {
         testSystem sys(testSystem::SPRINGS);

@@ -5,6 +5,7 @@ License
 
 #include "eigenLU.H"
 #include "addToRunTimeSelectionTable.H"
+#include "eigenVector.H"
 
 namespace Foam
 {
@@ -132,7 +133,7 @@ Foam::linearSolver::performance Foam::linearSolvers::eigenLU::solve
         // preconditioned residual, which outdated factors (a contact
         // active set that has changed since) can make small while the
         // true one is not
-        if (gmres_.info() == Eigen::Success && x.allFinite())
+        if (gmres_.info() == Eigen::Success && allFinite(x))
         {
             p.relativeResidual =
                 normB > 0 ? scalar((b - A_*x).norm()/normB) : scalar(0);
@@ -155,7 +156,7 @@ Foam::linearSolver::performance Foam::linearSolvers::eigenLU::solve
     x = lu_.solve(b);
     p.relativeResidual =
         normB > 0 ? scalar((b - A_*x).norm()/normB) : scalar(0);
-    p.converged = x.allFinite();
+    p.converged = allFinite(x);
     if (!p.converged)
     {
         p.reason = "the LU solve returned non-finite values";
