@@ -1,5 +1,5 @@
 # triboFoam: Hertz line-contact fit for the verification checks
-# (doc/theory.md [V4], [V9]). License: GPL-3.0-or-later
+# (doc/theory.md [V4], [V9], [V11]). License: GPL-3.0-or-later
 import math
 
 

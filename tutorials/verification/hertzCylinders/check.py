@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # Hertz contact of two elastic cylinders (plane strain, frictionless,
 # deformableContact): peak pressure and half-width of the computed contact
-# pressure against Hertz for the computed contact force (doc/theory.md [V9]).
+# pressure against Hertz for the computed contact force (doc/theory.md [V11]).
 # Writes results.dat.
 #
 # The half model carries half the load per thickness t: P = 2 Fy/t. Hertz:

@@ -34,7 +34,7 @@ Foam::autoPtr<Foam::linearSolver> Foam::linearSolver::New
 {
     // The dictionary the solver is built from: the user's, or with the
     // default's choice of preconditioner added
-    dictionary solverDict(dict);
+    dictionary solverDict(dict.parent(), dict);
 
     word solverType;
     if (dict.readIfPresent("type", solverType))
