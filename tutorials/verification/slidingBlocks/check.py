@@ -12,8 +12,9 @@
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.environ["TRIBOFOAM_DIR"], "bin", "python"))
-import foamio
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import blockData  # noqa: E402
+import foamio  # noqa: E402  (on the path blockData sets)
 
 mu, V = 0.2, 1e-5           # 0/D: friction coefficient, drag rate [m/s]
 slave, master = "upperBottom", "lowerTop"
@@ -21,43 +22,17 @@ case = sys.argv[1] if len(sys.argv) > 1 else "."
 t0, t1 = 2.5, 3.0
 
 
-def rows(path):
-    return {round(r[0], 9): r for r in (
-        [float(v) for v in l.split()] for l in open(os.path.join(case, path))
-        if l[0] != "#")}
-
-
-top = rows("postProcessing/solidForces/top.dat")
-con = rows("postProcessing/contact/%s.dat" % slave)
-mas = rows("postProcessing/contact/%s.dat" % master)
+top = blockData.rows(case, "postProcessing/solidForces/top.dat")
+con = blockData.rows(case, "postProcessing/contact/%s.dat" % slave)
+mas = blockData.rows(case, "postProcessing/contact/%s.dat" % master)
 nS, nM, S0 = 40, 50, 0.00025*0.0005     # faces, slave face area [m^2]
 
 
 def field(time, name, side, n):
-    return foamio.readPatchField(os.path.join(case, time, name), side, n)
+    return blockData.field(case, time, name, side, n)
 
 
-# relative slip of each slave face over the interval: its displacement
-# increment less that of the master surface under it (interpolated between
-# the master face centres)
-Cs = field("0", "C", slave, nS)
-Cm = field("0", "C", master, nM)
-dS = [a[0] - b[0] for a, b in zip(field("3", "D", slave, nS),
-                                   field("2.5", "D", slave, nS))]
-dM = [a[0] - b[0] for a, b in zip(field("3", "D", master, nM),
-                                   field("2.5", "D", master, nM))]
-xm = [c[0] for c in Cm]
-
-
-def masterAt(x):
-    for k in range(len(xm) - 1):
-        if xm[k] <= x <= xm[k + 1]:
-            w = (x - xm[k])/(xm[k + 1] - xm[k])
-            return (1 - w)*dM[k] + w*dM[k + 1]
-    return dM[0] if x < xm[0] else dM[-1]
-
-
-slips = [d - masterAt(c[0]) for d, c in zip(dS, Cs)]
+slips = blockData.relativeSlips(case, slave, master, nS, nM, "2.5", "3")
 # face by face: mu x (normal force of the face, mean over the interval) x
 # its slip; the normal force per reference area is nominalContactPressure
 p0 = field("2.5", "nominalContactPressure", slave, nS)

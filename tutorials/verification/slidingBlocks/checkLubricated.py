@@ -13,8 +13,8 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.environ["TRIBOFOAM_DIR"], "bin", "python"))
-import foamio
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import blockData  # noqa: E402
 
 M, D0, Vs, muS, muD, vc, etaB, alpha = \
     0.1, 1e-6, 1e-9, 0.12, 0.07, 1e-3, 3e11, 0.3
@@ -22,37 +22,16 @@ case = sys.argv[1]
 slave, master, nS, nM = "upperBottom", "lowerTop", 40, 50
 
 
-def rows(path):
-    return {round(r[0], 9): r for r in (
-        [float(v) for v in l.split()] for l in open(os.path.join(case, path))
-        if l[0] != "#")}
-
-
 def field(time, name, side, n):
-    return foamio.readPatchField(os.path.join(case, time, name), side, n)
+    return blockData.field(case, time, name, side, n)
 
 
-con = rows("postProcessing/contact/%s.dat" % slave)
+con = blockData.rows(case, "postProcessing/contact/%s.dat" % slave)
 N = math.hypot(con[3.0][1], con[3.0][2])
 F = math.hypot(con[3.0][4], con[3.0][5])
 
-Cs, Cm = field("0", "C", slave, nS), field("0", "C", master, nM)
-dS = [a[0] - b[0] for a, b in zip(field("3", "D", slave, nS),
-                                   field("2.5", "D", slave, nS))]
-dM = [a[0] - b[0] for a, b in zip(field("3", "D", master, nM),
-                                   field("2.5", "D", master, nM))]
-xm = [c[0] for c in Cm]
-
-
-def masterAt(x):
-    for k in range(len(xm) - 1):
-        if xm[k] <= x <= xm[k + 1]:
-            w = (x - xm[k])/(xm[k + 1] - xm[k])
-            return (1 - w)*dM[k] + w*dM[k + 1]
-    return dM[0] if x < xm[0] else dM[-1]
-
-
-v = sum(d - masterAt(c[0]) for d, c in zip(dS, Cs))/nS/0.5
+v = sum(blockData.relativeSlips(case, slave, master, nS, nM, "2.5",
+                                 "3"))/nS/0.5
 p = field("3", "contactPressure", slave, nS)
 pn = field("3", "nominalContactPressure", slave, nS)
 A = sum(b/a*0.00025*0.0005 for a, b in zip(p, pn))
