@@ -23,6 +23,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.environ["TRIBOFOAM_DIR"], "bin", "python"))
 import foamio  # noqa: E402
+import hertzFit  # noqa: E402
 
 R, E, nu = 0.01, 200e9, 0.3
 Estar = E/(1 - nu*nu)
@@ -48,14 +49,9 @@ h = float(re.search(r"^contactZone\s+([^;\s]+);", mp, re.M).group(1)) \
     / float(re.search(r"^nContact\s+([^;\s]+);", mp, re.M).group(1))
 inContact = [(math.hypot(c[0], c[1]), pi) for c, pi in zip(C, p) if pi > 0]
 rMax = max(r for r, _ in inContact)
-fit = [(r*r, pp*pp) for r, pp in inContact if r < rMax - h]
+fit = [(r, pp) for r, pp in inContact if r < rMax - h]
 n = len(fit)
-mx = sum(x for x, _ in fit)/n
-my = sum(y for _, y in fit)/n
-B = sum((x - mx)*(y - my) for x, y in fit)/sum((x - mx)**2 for x, _ in fit)
-A = my - B*mx
-p0 = math.sqrt(A)
-a = math.sqrt(-A/B)
+p0, a = hertzFit.fitProfile(fit)
 pMax = max(pp for _, pp in inContact)
 
 res = {
