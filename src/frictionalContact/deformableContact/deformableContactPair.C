@@ -423,36 +423,26 @@ void Foam::deformableContactFvPatchVectorField::tangent
 ) const
 {
     DynamicList<faceCoupling> c;
-    derivatives(k, df, c);
+    tangentAndCouplings(k, df, c);
 }
 
 
-void Foam::deformableContactFvPatchVectorField::couplingTangent
+void Foam::deformableContactFvPatchVectorField::tangentAndCouplings
 (
     const solidPatchKinematics& k,
+    List<faceForceTangent>& df,
     DynamicList<faceCoupling>& c
 ) const
 {
-    List<faceForceTangent> df;
-    derivatives(k, df, c);
-}
-
-
-void Foam::deformableContactFvPatchVectorField::derivatives
-(
-    const solidPatchKinematics& k,
-    List<faceForceTangent>& own,
-    DynamicList<faceCoupling>& coupling
-) const
-{
+    // This side's own-face tangents and couplings [C13]
     checkPair();
     List<faceForceTangent> slaveOwn;
     List<faceForceTangent> masterOwn;
     DynamicList<faceCoupling> cs;
     DynamicList<faceCoupling> cm;
     slaveSide().pairTangent(k.deltaT, slaveOwn, masterOwn, cs, cm);
-    own.transfer(slave_ ? slaveOwn : masterOwn);
-    coupling.transfer(slave_ ? cs : cm);
+    df.transfer(slave_ ? slaveOwn : masterOwn);
+    c.transfer(slave_ ? cs : cm);
 }
 
 

@@ -392,10 +392,12 @@ void Foam::solidDiscretisation::addForcePatch
     const solidForceBoundary& patch = bcs_.forcePatch(patchi);
 
     const forceKinematics fk(*this, patchi, mesh_.time().deltaTValue());
-    const solidPatchKinematics& k = fk.k;
 
+    // One evaluation gives a contact pair's own-face tangents and its
+    // couplings to the partner's faces
     List<faceForceTangent> df;
-    patch.tangent(k, df);
+    DynamicList<faceCoupling> c;
+    patch.tangentAndCouplings(fk.k, df, c);
 
     forAll(faceCells, i)
     {
@@ -417,23 +419,20 @@ void Foam::solidDiscretisation::addForcePatch
         }
     }
 
+    addForceCouplings(patchi, c, M);
 }
 
 
 void Foam::solidDiscretisation::addForceCouplings
 (
     const label patchi,
+    const UList<faceCoupling>& c,
     blockSparseMatrix& M
 ) const
 {
     // [C13] a face force that depends on the kinematics of a face of
     // another patch (or another face of its own): the blocks of that face's
     // cell's gradient stencil in the row of the face's cell
-    const solidForceBoundary& patch = bcs_.forcePatch(patchi);
-    const forceKinematics fk(*this, patchi, mesh_.time().deltaTValue());
-    DynamicList<faceCoupling> c;
-    patch.couplingTangent(fk.k, c);
-
     const labelUList& rowCells = mesh_.boundary()[patchi].faceCells();
     auto add = [&](const label r, const label col, const tensor& K)
     {
@@ -558,10 +557,6 @@ void Foam::solidDiscretisation::jacobian(blockSparseMatrix& M) const
                 break;
             case solidBoundaries::FORCE:
                 addForcePatch(patchi, M);
-                if (bcs_.forcePatch(patchi).couplesToOtherFaces())
-                {
-                    addForceCouplings(patchi, M);
-                }
                 break;
             default:
                 addBoundaryFaces(patchi, cof, M);
