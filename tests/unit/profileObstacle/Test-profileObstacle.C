@@ -25,6 +25,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "unitTest.H"
+#include "dictionaryTestTools.H"
 #include "rigidObstacle.H"
 #include "profileCurve.H"
 #include "IStringStream.H"
@@ -36,33 +37,12 @@ Description
 #include <sstream>
 
 using namespace Foam;
+using unitTest::dictOf;
+using unitTest::fatalMessage;
 using namespace Foam::constant::mathematical;
 
 namespace
 {
-
-dictionary dictOf(const std::string& s)
-{
-    IStringStream is(s);
-    dictionary d(is);
-    d.name() = "testDict";
-    return d;
-}
-
-//- Run f, return the fatal error message ("" if none was raised)
-template<class F>
-std::string fatalMessage(F f)
-{
-    try
-    {
-        f();
-    }
-    catch (const Foam::error& e)
-    {
-        return e.message();
-    }
-    return "";
-}
 
 // The pear die (tutorials/pearShapedTube/base/system/dieProfileDict)
 const scalar R = 0.0286;

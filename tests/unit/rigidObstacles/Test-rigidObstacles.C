@@ -33,6 +33,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "unitTest.H"
+#include "dictionaryTestTools.H"
 #include "rigidObstacle.H"
 #include "triSurfaceObstacle.H"
 #include "IStringStream.H"
@@ -43,18 +44,12 @@ Description
 #include <iomanip>
 
 using namespace Foam;
+using unitTest::dictOf;
+using unitTest::fatalMessage;
 using namespace Foam::constant::mathematical;
 
 namespace
 {
-
-dictionary dictOf(const std::string& s)
-{
-    IStringStream is(s);
-    dictionary d(is);
-    d.name() = "testDict";
-    return d;
-}
 
 autoPtr<rigidObstacle> obstacle(const std::string& s, const fileName& dir = "")
 {
@@ -67,20 +62,6 @@ scalar angle(const vector& a, const vector& b)
     return Foam::atan2(mag(a ^ b), a & b);
 }
 
-//- Run f, return the fatal error message ("" if none was raised)
-template<class F>
-std::string fatalMessage(F f)
-{
-    try
-    {
-        f();
-    }
-    catch (const Foam::error& e)
-    {
-        return e.message();
-    }
-    return "";
-}
 
 //- ASCII STL of the polyline pts (x-y plane) extruded over [z0, z1];
 //  triangle normals to the left of the direction of travel
