@@ -112,9 +112,11 @@ def parseSpec(path):
                                     "below|above <bound> <source>' or "
                                     "'check <quantity> near <value> <tol> "
                                     "rel|abs <source>'" % (path, lineno))
-            elif key in ("tutorial", "command", "results", "timeout"):
-                spec[key] = " ".join(words[1:]) if key == "command" \
-                    else words[1]
+            elif key == "command":
+                # the rest of the line as written: bash reads its quotes
+                spec[key] = line[len(key):].strip()
+            elif key in ("tutorial", "results", "timeout"):
+                spec[key] = words[1]
             else:
                 raise SpecError("%s:%d: unknown keyword '%s' (expected "
                                 "tutorial, command, results, timeout or "

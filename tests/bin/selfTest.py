@@ -5,7 +5,8 @@
 #   runTests.evaluate   nan, +inf and -inf fail every kind of check (below,
 #                       above, near); a missing quantity fails; finite
 #                       values on the right and wrong side of a bound;
-#   runTests.parseSpec  a spec without a check line is refused;
+#   runTests.parseSpec  a spec without a check line is refused; the command
+#                       is kept as written, quotes included;
 #   processTools.run    on a time-out every process of the command is
 #                       stopped: a shell's background children, and
 #                       mpirun with its ranks (which sit in process groups
@@ -80,6 +81,12 @@ def testParseSpec(tmp):
         check("parseSpec: a spec without checks is refused", False)
     except runTests.SpecError as e:
         check("parseSpec: a spec without checks is refused", True, str(e))
+    command = './Allrun -cases "a b" -np 1'
+    with open(path, "w") as f:
+        f.write("command  %s\ncheck x below 1 \"source\"\n" % command)
+    spec = runTests.parseSpec(path)
+    check("parseSpec: the command is kept as written (quotes included)",
+          spec["command"] == command, spec["command"])
 
 
 # ------------------------------------------------------------- time-outs
