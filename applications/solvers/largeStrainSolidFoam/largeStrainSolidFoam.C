@@ -35,6 +35,7 @@ Description
 #include "OFstream.H"
 #include "clockTime.H"
 #include "writeSchedule.H"
+#include "keepFreedMemory.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -45,6 +46,8 @@ int main(int argc, char *argv[])
         "Large-strain finite-volume solid solver (total Lagrangian,"
         " Newton-Krylov) for metal forming with frictional contact"
     );
+
+    keepFreedMemory();
 
     #include "setRootCase.H"
     #include "createTime.H"
