@@ -203,7 +203,42 @@ bool Foam::linearSolvers::petscSolver::update()
         return true;
     }
     reused_ = false;
-    return setUpPreconditioner();
+    if (!setUpPreconditioner() && useTranslations())
+    {
+        check
+        (
+            KSPSetOperators(ksp_, A_.mat(), A_.mat()),
+            "setting the operator"
+        );
+        return setUpPreconditioner();
+    }
+    return setUp_;
+}
+
+
+bool Foam::linearSolvers::petscSolver::useTranslations()
+{
+    // Only the smoothed-aggregation multigrids build on the modes
+    if
+    (
+        !rigidBodyModes_ || nModes_ <= 0
+     || (pcName_ != "gamg" && pcName_ != "ml")
+    )
+    {
+        return false;
+    }
+    // [S21] The rotations need aggregates of three cells or more that are
+    // not on a line; GAMG's smallest aggregates (processor boundaries,
+    // contact zones) then give its coarse levels zero diagonals and
+    // singular blocks, where SOR and the coarse LU fail. The translations'
+    // coarse diagonals are sums of the fine ones: from now on these
+    check(MatSetNearNullSpace(A_.mat(), nullptr), "removing the modes");
+    rigidBodyModes_ = false;
+    nModes_ = 0;
+    Info<< "Linear solver petsc: the set-up failed with the rigid-body"
+        << " modes: near-null space the " << matrix_.nComponents()
+        << " translations from now on" << endl;
+    return true;
 }
 
 
@@ -310,12 +345,15 @@ Foam::linearSolver::performance Foam::linearSolvers::petscSolver::solve
         return p;
     }
 
-    Eigen::VectorXd x0;
-    if (reused_)
-    {
-        x0 = x;
-    }
+    Eigen::VectorXd x0(x);
     p = krylovSolve(bp, xp, relTol);
+    if (!p.converged && !reused_ && pcFailed() && useTranslations())
+    {
+        // The multigrid failed in its first application (a zero pivot of
+        // a level's SOR): set up with the translations, solve again
+        x0 = x;
+        reused_ = true;
+    }
     if (!p.converged && reused_)
     {
         // The kept preconditioner no longer does: build it for this
@@ -328,10 +366,21 @@ Foam::linearSolver::performance Foam::linearSolvers::petscSolver::solve
         }
         const label itsReused = p.iterations;
         reused_ = false;
+        if (pcFailed())
+        {
+            // PETSc keeps a failed preconditioner's state
+            check(KSPDestroy(&ksp_), "destroying the solver");
+            createKsp();
+        }
         check
         (
             KSPSetReusePreconditioner(ksp_, PETSC_FALSE),
             "setting the preconditioner reuse"
+        );
+        check
+        (
+            KSPSetOperators(ksp_, A_.mat(), A_.mat()),
+            "setting the operator"
         );
         if (!setUpPreconditioner())
         {
@@ -364,6 +413,14 @@ Foam::linearSolver::performance Foam::linearSolvers::petscSolver::solve
     }
 
     return p;
+}
+
+
+bool Foam::linearSolvers::petscSolver::pcFailed() const
+{
+    KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+    check(KSPGetConvergedReason(ksp_, &reason), "querying the solve");
+    return returnReduce(reason == KSP_DIVERGED_PC_FAILED, orOp<bool>());
 }
 
 

@@ -93,19 +93,10 @@ void Foam::linearSolvers::petscSolver::readKeywords()
     }
     view_ = dict_.lookupOrDefault<bool>("view", false);
 
-    // 3-D GAMG: the translations only. With the rotations, aggregates of
-    // one or two cells (at processor boundaries, or beyond 30 000 cells)
-    // gave the coarse levels zero diagonals and singular blocks on the
-    // frictional-contact Jacobian (SOR and the coarse LU failed: zero
-    // pivot); the translations' coarse diagonals are sums of the fine
-    // ones (doc/performance.md section 12)
-    const bool threeD = matrix_.nComponents() == 3;
+    // The rigid-body modes, replaced by the translations when a set-up
+    // or its first application fails with them (useTranslations)
     const word nullSpace =
-        dict_.lookupOrDefault<word>
-        (
-            "nearNullSpace",
-            threeD && pcName_ == "gamg" ? "translations" : "rigidBodyModes"
-        );
+        dict_.lookupOrDefault<word>("nearNullSpace", "rigidBodyModes");
     if (nullSpace != "rigidBodyModes" && nullSpace != "translations")
     {
         FatalIOErrorInFunction(dict_)
@@ -116,12 +107,13 @@ void Foam::linearSolvers::petscSolver::readKeywords()
     }
     rigidBodyModes_ = nullSpace == "rigidBodyModes";
 
-    // 3-D multigrid: the set-up of an earlier Newton iteration is kept
-    // while it works (petscSolver::update)
-    const bool multigrid =
-        pcName_ == "gamg" || pcName_ == "boomerAMG" || pcName_ == "ml";
-    reuse_ =
-        dict_.lookupOrDefault<bool>("reusePreconditioner", threeD && multigrid);
+    // Off by default: on the 3-D ring it saved 11 % of the CPU at 31 000
+    // cells (GAMG's set-up is cheap next to its solves) but raised the
+    // Newton iterations of the 336-cell quarter by a third (the weaker
+    // preconditioner makes GMRES stop right at the inexact Newton
+    // tolerance) and made them differ between serial and parallel runs
+    // (doc/performance.md section 12)
+    reuse_ = dict_.lookupOrDefault<bool>("reusePreconditioner", false);
     refreshIterations_ =
         dict_.lookupOrDefault<label>("refreshIterations", 30);
     if (refreshIterations_ < 1)

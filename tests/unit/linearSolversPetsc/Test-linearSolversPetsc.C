@@ -237,8 +237,8 @@ void symmetric()
         );
         unitTest::checkTrue
         (
-            "3-D gamg: the preconditioner is reused by default",
-            s->description().find("reused") != std::string::npos
+            "3-D gamg: a new preconditioner per update by default",
+            s->description().find("reused") == std::string::npos
         );
         for (label i = 0; i < M3->values().size(); ++i)
         {
