@@ -177,12 +177,13 @@ bool Foam::linearSolvers::petscSolver::update()
         }
     }
 
-    // [S16] The preconditioner of an earlier Jacobian of the load step
-    // preconditions this one while the Krylov solves stay cheap with it:
-    // the multigrid set-up is most of a Newton iteration's cost on 3-D
-    // contact (doc/performance.md section 12), the values change by a few
-    // per cent between Newton iterations. The Krylov method works on the
-    // new matrix, so the Newton step is the exact one to the tolerance
+    // reusePreconditioner: the preconditioner of an earlier Jacobian
+    // preconditions this one while the Krylov solves stay cheap with it
+    // (the values change by a few per cent between Newton iterations).
+    // The Krylov method works on the new matrix, so the Newton step is
+    // the exact one to the tolerance; but a weaker preconditioner makes
+    // GMRES stop right at the inexact Newton tolerance, which cost Newton
+    // iterations on the 3-D ring (doc/performance.md section 12)
     const bool reuse =
         reuse_ && setUp_ && lastConverged_
      && lastIterations_ <= refreshIterations_;
@@ -227,7 +228,7 @@ bool Foam::linearSolvers::petscSolver::useTranslations()
     {
         return false;
     }
-    // [S21] The rotations need aggregates of three cells or more that are
+    // [S16] The rotations need aggregates of three cells or more that are
     // not on a line; GAMG's smallest aggregates (processor boundaries,
     // contact zones) then give its coarse levels zero diagonals and
     // singular blocks, where SOR and the coarse LU fail. The translations'
