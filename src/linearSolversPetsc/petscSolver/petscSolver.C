@@ -94,6 +94,14 @@ Foam::linearSolvers::petscSolver::petscSolver
     pcName_(),
     maxIterations_(500),
     view_(false),
+    rigidBodyModes_(true),
+    reuse_(false),
+    refreshIterations_(30),
+    reused_(false),
+    lastConverged_(false),
+    lastIterations_(0),
+    nSetUps_(0),
+    nReuses_(0),
     A_(matrix),
     ksp_(nullptr),
     r_(nullptr),
@@ -120,6 +128,11 @@ Foam::linearSolvers::petscSolver::petscSolver
 
 Foam::linearSolvers::petscSolver::~petscSolver()
 {
+    if (reuse_)
+    {
+        Info<< "Linear solver petsc: " << nSetUps_ << " preconditioner"
+            << " set-ups, " << nReuses_ << " reuses" << endl;
+    }
     if (petscSession::running())
     {
         petscSession::fpeGuard guard;
@@ -138,7 +151,18 @@ bool Foam::linearSolvers::petscSolver::update()
     check(A_.assemble(), "assembling the matrix");
     if (nModes_ < 0)
     {
-        check(A_.setRigidBodyModes(nModes_), "building the rigid-body modes");
+        if (rigidBodyModes_)
+        {
+            check
+            (
+                A_.setRigidBodyModes(nModes_),
+                "building the rigid-body modes"
+            );
+        }
+        else
+        {
+            nModes_ = 0;
+        }
         Info<< "Linear solver petsc: near-null space: ";
         if (nModes_ > 0)
         {
@@ -146,14 +170,82 @@ bool Foam::linearSolvers::petscSolver::update()
         }
         else
         {
-            Info<< "translations (no cell coordinates given)" << endl;
+            Info<< "the " << matrix_.nComponents() << " translations of the"
+                << " block size"
+                << (rigidBodyModes_ ? " (no cell coordinates given)" : "")
+                << endl;
         }
     }
+
+    // reusePreconditioner: the preconditioner of an earlier Jacobian
+    // preconditions this one while the Krylov solves stay cheap with it
+    // (the values change by a few per cent between Newton iterations).
+    // The Krylov method works on the new matrix, so the Newton step is
+    // the exact one to the tolerance; but a weaker preconditioner makes
+    // GMRES stop right at the inexact Newton tolerance, which cost Newton
+    // iterations on the 3-D ring (doc/performance.md section 12)
+    const bool reuse =
+        reuse_ && setUp_ && lastConverged_
+     && lastIterations_ <= refreshIterations_;
+    check
+    (
+        KSPSetReusePreconditioner(ksp_, reuse ? PETSC_TRUE : PETSC_FALSE),
+        "setting the preconditioner reuse"
+    );
     check
     (
         KSPSetOperators(ksp_, A_.mat(), A_.mat()),
         "setting the operator"
     );
+    if (reuse)
+    {
+        reused_ = true;
+        ++nReuses_;
+        return true;
+    }
+    reused_ = false;
+    if (!setUpPreconditioner() && useTranslations())
+    {
+        check
+        (
+            KSPSetOperators(ksp_, A_.mat(), A_.mat()),
+            "setting the operator"
+        );
+        return setUpPreconditioner();
+    }
+    return setUp_;
+}
+
+
+bool Foam::linearSolvers::petscSolver::useTranslations()
+{
+    // Only the smoothed-aggregation multigrids build on the modes
+    if
+    (
+        !rigidBodyModes_ || nModes_ <= 0
+     || (pcName_ != "gamg" && pcName_ != "ml")
+    )
+    {
+        return false;
+    }
+    // [S16] The rotations need aggregates of three cells or more that are
+    // not on a line; GAMG's smallest aggregates (processor boundaries,
+    // contact zones) then give its coarse levels zero diagonals and
+    // singular blocks, where SOR and the coarse LU fail. The translations'
+    // coarse diagonals are sums of the fine ones: from now on these
+    check(MatSetNearNullSpace(A_.mat(), nullptr), "removing the modes");
+    rigidBodyModes_ = false;
+    nModes_ = 0;
+    Info<< "Linear solver petsc: the set-up failed with the rigid-body"
+        << " modes: near-null space the " << matrix_.nComponents()
+        << " translations from now on" << endl;
+    return true;
+}
+
+
+bool Foam::linearSolvers::petscSolver::setUpPreconditioner()
+{
+    ++nSetUps_;
 
     // Factorisation and multigrid set-up. A numerical failure is the
     // caller's to handle (reject the step), on every processor alike
@@ -211,6 +303,7 @@ bool Foam::linearSolvers::petscSolver::update()
         // re-assembles after rejecting the step)
         check(KSPDestroy(&ksp_), "destroying the solver");
         createKsp();
+        lastConverged_ = false;
     }
     return setUp_;
 }
@@ -253,6 +346,96 @@ Foam::linearSolver::performance Foam::linearSolvers::petscSolver::solve
         return p;
     }
 
+    Eigen::VectorXd x0(x);
+    p = krylovSolve(bp, xp, relTol);
+    if (!p.converged && !reused_ && pcFailed() && useTranslations())
+    {
+        // The multigrid failed in its first application (a zero pivot of
+        // a level's SOR): set up with the translations, solve again
+        x0 = x;
+        reused_ = true;
+    }
+    if (!p.converged && reused_)
+    {
+        // The kept preconditioner no longer does: build it for this
+        // matrix and solve again from the caller's initial guess
+        if (debug)
+        {
+            Info<< "Linear solver petsc: " << p.reason.c_str() << " with the"
+                << " reused preconditioner (" << p.iterations
+                << " iterations): set up again" << endl;
+        }
+        const label itsReused = p.iterations;
+        reused_ = false;
+        if (pcFailed())
+        {
+            // PETSc keeps a failed preconditioner's state
+            check(KSPDestroy(&ksp_), "destroying the solver");
+            createKsp();
+        }
+        check
+        (
+            KSPSetReusePreconditioner(ksp_, PETSC_FALSE),
+            "setting the preconditioner reuse"
+        );
+        check
+        (
+            KSPSetOperators(ksp_, A_.mat(), A_.mat()),
+            "setting the operator"
+        );
+        if (!setUpPreconditioner())
+        {
+            p = performance();
+            p.reason = "the preconditioner set-up failed: " + setUpFailure_;
+            return p;
+        }
+        check(A_.toPetsc(x0, xp), "copying the initial guess");
+        p = krylovSolve(bp, xp, relTol);
+        lastIterations_ = p.iterations;
+        p.iterations += itsReused;
+    }
+    else
+    {
+        lastIterations_ = p.iterations;
+    }
+    lastConverged_ = p.converged;
+    check(A_.fromPetsc(xp, x), "copying the solution");
+
+    if (view_ && !checkedOptions_)
+    {
+        check(KSPView(ksp_, PETSC_VIEWER_STDOUT_WORLD), "viewing the solver");
+    }
+    if (!checkedOptions_)
+    {
+        // Every option has been read by now (some only at set-up or at
+        // the end of the first solve)
+        checkUnusedOptions();
+        checkedOptions_ = true;
+    }
+
+    return p;
+}
+
+
+bool Foam::linearSolvers::petscSolver::pcFailed() const
+{
+    KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+    check(KSPGetConvergedReason(ksp_, &reason), "querying the solve");
+    return returnReduce(reason == KSP_DIVERGED_PC_FAILED, orOp<bool>());
+}
+
+
+Foam::linearSolver::performance
+Foam::linearSolvers::petscSolver::krylovSolve
+(
+    Vec bp,
+    Vec xp,
+    const scalar relTol
+)
+{
+    performance p;
+    PetscReal normB = 0;
+    check(VecNorm(bp, NORM_2, &normB), "computing a norm");
     check
     (
         KSPSetTolerances
@@ -273,7 +456,6 @@ Foam::linearSolver::performance Foam::linearSolvers::petscSolver::solve
     PetscInt its = 0;
     check(KSPGetConvergedReason(ksp_, &reason), "querying the solve");
     check(KSPGetIterationNumber(ksp_, &its), "querying the solve");
-    check(A_.fromPetsc(xp, x), "copying the solution");
 
     // The true residual, whatever norm the method monitored
     PetscReal normR = 0;
@@ -312,19 +494,6 @@ Foam::linearSolver::performance Foam::linearSolvers::petscSolver::solve
             p.reason += ": " + explain(pcReason);
         }
     }
-
-    if (view_ && !checkedOptions_)
-    {
-        check(KSPView(ksp_, PETSC_VIEWER_STDOUT_WORLD), "viewing the solver");
-    }
-    if (!checkedOptions_)
-    {
-        // Every option has been read by now (some only at set-up or at
-        // the end of the first solve)
-        checkUnusedOptions();
-        checkedOptions_ = true;
-    }
-
     return p;
 }
 
