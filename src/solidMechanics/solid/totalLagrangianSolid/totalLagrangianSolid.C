@@ -143,10 +143,7 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
     jacobian_.setCoordinates(mesh.C().primitiveField());
 
     const dictionary& solidDict = mesh.solutionDict().subDict("solid");
-    linearSolver_ = linearSolver::New
-    (
-        solidDict.subOrEmptyDict("linearSolver"), jacobian_
-    );
+    linearSolver_ = newLinearSolver();
     Info<< "    " << linearSolver_->description().c_str() << endl;
 
     if (solidDict.lookupOrDefault<bool>("checkJacobian", false))
@@ -313,14 +310,7 @@ bool Foam::totalLagrangianSolid::updateJacobian(const Eigen::VectorXd& x)
         // pattern, a new linear solver for it, the values again
         linearSolver_.clear();
         jacobian_.setPattern(discretisation_.jacobianPattern());
-        linearSolver_ = linearSolver::New
-        (
-            mesh_.solutionDict().subDict("solid").subOrEmptyDict
-            (
-                "linearSolver"
-            ),
-            jacobian_
-        );
+        linearSolver_ = newLinearSolver();
         discretisation_.jacobian(jacobian_);
         if (debug)
         {
@@ -357,6 +347,18 @@ bool Foam::totalLagrangianSolid::updateJacobian(const Eigen::VectorXd& x)
             << " update " << timer.cpuTimeIncrement() << " s (CPU)" << endl;
     }
     return ok;
+}
+
+
+Foam::autoPtr<Foam::linearSolver>
+Foam::totalLagrangianSolid::newLinearSolver() const
+{
+    // subOrEmptyDict copies a found sub-dictionary without its parent;
+    // copied again with the parent (not moved: that would prefix the
+    // parent's name a second time)
+    const dictionary& solidDict = mesh_.solutionDict().subDict("solid");
+    const dictionary userDict(solidDict.subOrEmptyDict("linearSolver"));
+    return linearSolver::New(dictionary(solidDict, userDict), jacobian_);
 }
 
 
