@@ -11,6 +11,9 @@ Description
 
 #include "deformableContactFvPatchVectorField.H"
 #include "volFields.H"
+#include "polygonOverlap.H"
+#include "indexedOctree.H"
+#include "treeDataPoint.H"
 #include <algorithm>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -18,13 +21,13 @@ Description
 namespace Foam
 {
 
-//- One overlap of a slave face with a master face [C11]
+//- One overlap of a slave face with a master face [C11], [C11b]
 struct faceOverlap
 {
     label master;
-    scalar length;      // overlap length l_sm, in the master's measure
-    scalar projected;   // length of the slave segment's projection
-    scalar gap;         // (x_s - x_m) . n_m at the overlap's midpoint
+    scalar length;      // overlap length (3-D: area) l_sm, master measure
+    scalar projected;   // measure of the slave face's projection
+    scalar gap;         // (x_s - x_m) . n_m at the overlap's centroid
 };
 
 } // End namespace Foam
@@ -45,6 +48,11 @@ void Foam::deformableContactFvPatchVectorField::candidates
     // their interval (widened by the search distance); a slave face's
     // candidates start within one interval length before its own
     // [C11]: O(n log n)
+    if (sl.Xv.size())
+    {
+        candidates3D(sl, ms, margin, cand);
+        return;
+    }
     const label nM = ms.X.size();
     cand.setSize(sl.X.size());
     if (nM == 0)
@@ -112,6 +120,67 @@ void Foam::deformableContactFvPatchVectorField::candidates
 }
 
 
+void Foam::deformableContactFvPatchVectorField::candidates3D
+(
+    const side& sl,
+    const side& ms,
+    const scalar margin,
+    labelListList& cand
+) const
+{
+    // [C11b] an octree of the master faces' deformed centres; a slave
+    // face's candidates are the centres in its bounding box widened by the
+    // search distance and the largest master radius: O(n log n)
+    const label nM = ms.X.size();
+    cand.setSize(sl.X.size());
+    if (nM == 0)
+    {
+        cand = labelList();
+        return;
+    }
+    const pointField centres(ms.X + ms.D);
+    scalar radius = 0;
+    forAll(ms.v, m)
+    {
+        for (const point& p : ms.v[m])
+        {
+            radius = max(radius, mag(p - centres[m]));
+        }
+    }
+    const scalar widen = searchDistance_ + radius + 2*margin*radius;
+
+    treeBoundBox overall(centres);
+    overall.inflate(1e-4);
+    const indexedOctree<treeDataPoint> tree
+    (
+        treeDataPoint(centres),
+        overall,
+        8,
+        10,
+        3.0
+    );
+
+    DynamicList<label> found(8);
+    forAll(cand, i)
+    {
+        treeBoundBox bb(sl.v[i]);
+        bb.min() -= vector::uniform(widen);
+        bb.max() += vector::uniform(widen);
+        found.clear();
+        for (const label m : tree.findBox(bb))
+        {
+            // facing surfaces only
+            if ((sl.n[i] & ms.n[m]) < 0)
+            {
+                found.append(m);
+            }
+        }
+        Foam::sort(found);
+        cand[i] = found;
+    }
+}
+
+
 void Foam::deformableContactFvPatchVectorField::evaluateFace
 (
     const label i,
@@ -132,41 +201,69 @@ void Foam::deformableContactFvPatchVectorField::evaluateFace
     const point& bs = sl.b[i];
 
     DynamicList<faceOverlap> overlaps(8);
-    for (const label m : cand)
+    if (sl.Xv.size())
     {
-        const vector& nm = ms.n[m];
-        if ((sl.n[i] & nm) >= 0)
+        // [C11b] polygons
+        const point xs(sl.X[i] + sl.D[i]);
+        for (const label m : cand)
         {
-            continue;
+            scalar area;
+            scalar projected;
+            scalar g;
+            if
+            (
+                polygonOverlap::overlap
+                (
+                    sl.v[i], xs, sl.n[i],
+                    ms.v[m], ms.X[m] + ms.D[m], ms.n[m],
+                    area, projected, g
+                )
+             && mag(g) <= searchDistance_
+            )
+            {
+                overlaps.append({m, area, projected, g});
+            }
         }
-        const vector e(ms.b[m] - ms.a[m]);
-        const scalar Lm = mag(e);
-        if (Lm < VSMALL)
+    }
+    else
+    {
+        // [C11] segments
+        for (const label m : cand)
         {
-            continue;
+            const vector& nm = ms.n[m];
+            if ((sl.n[i] & nm) >= 0)
+            {
+                continue;
+            }
+            const vector e(ms.b[m] - ms.a[m]);
+            const scalar Lm = mag(e);
+            if (Lm < VSMALL)
+            {
+                continue;
+            }
+            const vector tau(e/Lm);
+            const scalar xa = (as - ms.a[m]) & tau;
+            const scalar xb = (bs - ms.a[m]) & tau;
+            const scalar l0 = max(min(xa, xb), scalar(0));
+            const scalar l1 = min(max(xa, xb), Lm);
+            if (l1 <= l0)
+            {
+                continue;
+            }
+            // the gap is linear over the overlap: its midpoint value is its
+            // mean
+            const scalar xc = 0.5*(l0 + l1);
+            const scalar lambda =
+                mag(xb - xa) > VSMALL ? (xc - xa)/(xb - xa) : 0.5;
+            const point xs(as + lambda*(bs - as));
+            const point xm(ms.a[m] + xc*tau);
+            const scalar g = (xs - xm) & nm;
+            if (mag(g) > searchDistance_)
+            {
+                continue;
+            }
+            overlaps.append({m, l1 - l0, mag(xb - xa), g});
         }
-        const vector tau(e/Lm);
-        const scalar xa = (as - ms.a[m]) & tau;
-        const scalar xb = (bs - ms.a[m]) & tau;
-        const scalar l0 = max(min(xa, xb), scalar(0));
-        const scalar l1 = min(max(xa, xb), Lm);
-        if (l1 <= l0)
-        {
-            continue;
-        }
-        // the gap is linear over the overlap: its midpoint value is its
-        // mean
-        const scalar xc = 0.5*(l0 + l1);
-        const scalar lambda =
-            mag(xb - xa) > VSMALL ? (xc - xa)/(xb - xa) : 0.5;
-        const point xs(as + lambda*(bs - as));
-        const point xm(ms.a[m] + xc*tau);
-        const scalar g = (xs - xm) & nm;
-        if (mag(g) > searchDistance_)
-        {
-            continue;
-        }
-        overlaps.append({m, l1 - l0, mag(xb - xa), g});
     }
 
     scalar total = 0;
@@ -317,7 +414,7 @@ void Foam::deformableContactFvPatchVectorField::pairTangent
         {
             side& s = inp < 0 ? sl : ms;
             const label fi = inp < 0 ? i : masters[inp];
-            const scalar hD = 1e-6*mag(s.b[fi] - s.a[fi]);
+            const scalar hD = 1e-6*faceLength(s, fi);
             const scalar hF = 1e-6;
             const vector D0(s.D[fi]);
             const tensor F0(s.F[fi]);
