@@ -13,13 +13,36 @@ Description
 #include "volFields.H"
 #include "polygonOverlap.H"
 #include "indexedOctree.H"
-#include "treeDataPoint.H"
+#include "treeDataPrimitivePatch.H"
+#include "primitiveFacePatch.H"
+#include <ctime>
 #include <algorithm>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace Foam
 {
+
+//- Adds the CPU time of its scope to 'sum' [s]; std::clock resolves
+//  microseconds where OpenFOAM's cpuTime counts 10 ms ticks, too coarse for
+//  the many short calls of a pair
+class pairTimer
+{
+    scalar& sum_;
+    const std::clock_t start_ = std::clock();
+
+public:
+
+    explicit pairTimer(scalar& sum)
+    :
+        sum_(sum)
+    {}
+
+    ~pairTimer()
+    {
+        sum_ += scalar(std::clock() - start_)/CLOCKS_PER_SEC;
+    }
+};
 
 //- One overlap of a slave face with a master face [C11], [C11b]
 struct faceOverlap
@@ -48,6 +71,7 @@ void Foam::deformableContactFvPatchVectorField::candidates
     // their interval (widened by the search distance); a slave face's
     // candidates start within one interval length before its own
     // [C11]: O(n log n)
+    const pairTimer timer(cost_.search);
     if (sl.Xv.size())
     {
         candidates3D(sl, ms, margin, cand);
@@ -128,9 +152,10 @@ void Foam::deformableContactFvPatchVectorField::candidates3D
     labelListList& cand
 ) const
 {
-    // [C11b] an octree of the master faces' deformed centres; a slave
-    // face's candidates are the centres in its bounding box widened by the
-    // search distance and the largest master radius: O(n log n)
+    // [C11b] an octree of the master faces' deformed polygons; a slave
+    // face's candidates are the master faces that meet its bounding box
+    // widened by the search distance (and 'margin' times its diameter):
+    // O(n log n)
     const label nM = ms.X.size();
     cand.setSize(sl.X.size());
     if (nM == 0)
@@ -138,22 +163,31 @@ void Foam::deformableContactFvPatchVectorField::candidates3D
         cand = labelList();
         return;
     }
-    const pointField centres(ms.X + ms.D);
-    scalar radius = 0;
+    label nPoints = 0;
     forAll(ms.v, m)
     {
-        for (const point& p : ms.v[m])
+        nPoints += ms.v[m].size();
+    }
+    faceList faces(nM);
+    pointField points(nPoints);
+    nPoints = 0;
+    forAll(ms.v, m)
+    {
+        face& f = faces[m];
+        f.setSize(ms.v[m].size());
+        forAll(f, k)
         {
-            radius = max(radius, mag(p - centres[m]));
+            f[k] = nPoints;
+            points[nPoints++] = ms.v[m][k];
         }
     }
-    const scalar widen = searchDistance_ + radius + 2*margin*radius;
-
-    treeBoundBox overall(centres);
+    const primitiveFacePatch surface(faces, points);
+    treeBoundBox overall(points);
     overall.inflate(1e-4);
-    const indexedOctree<treeDataPoint> tree
+    typedef treeDataPrimitivePatch<primitiveFacePatch> treeType;
+    const indexedOctree<treeType> tree
     (
-        treeDataPoint(centres),
+        treeType(true, surface, 1e-6),
         overall,
         8,
         10,
@@ -164,6 +198,7 @@ void Foam::deformableContactFvPatchVectorField::candidates3D
     forAll(cand, i)
     {
         treeBoundBox bb(sl.v[i]);
+        const scalar widen = searchDistance_ + margin*mag(bb.span());
         bb.min() -= vector::uniform(widen);
         bb.max() += vector::uniform(widen);
         found.clear();
@@ -339,8 +374,39 @@ void Foam::deformableContactFvPatchVectorField::evaluatePair
 }
 
 
+bool Foam::deformableContactFvPatchVectorField::takeCached
+(
+    const bool forSlave,
+    const side& sl,
+    const side& ms,
+    const scalar deltaT,
+    List<faceForceTangent>& own,
+    DynamicList<faceCoupling>& c
+) const
+{
+    tangentCache& k = cache_;
+    const bool hit =
+        k.valid
+     && k.forSlave == forSlave
+     && k.timeIndex == db().time().timeIndex()
+     && k.deltaT == deltaT
+     && k.slaveD == sl.D && k.slaveF == sl.F
+     && k.masterD == ms.D && k.masterF == ms.F;
+    if (hit)
+    {
+        own.transfer(k.own);
+        c.transfer(k.couplings);
+        ++cost_.nCached;
+    }
+    k = tangentCache();
+    return hit;
+}
+
+
 void Foam::deformableContactFvPatchVectorField::pairTangent
 (
+    side& sl,
+    side& ms,
     const scalar deltaT,
     List<faceForceTangent>& slaveOwn,
     List<faceForceTangent>& masterOwn,
@@ -359,10 +425,6 @@ void Foam::deformableContactFvPatchVectorField::pairTangent
     const label slavePatch = patch().index();
     const label masterPatch = m.patch().index();
 
-    side sl;
-    side ms;
-    kinematics(sl);
-    m.kinematics(ms);
     labelListList cand;
     candidates(sl, ms, 0, cand);
 
@@ -490,6 +552,7 @@ void Foam::deformableContactFvPatchVectorField::pairTangent
             }
         }
     }
+    ++cost_.nTangent;
 }
 
 
@@ -502,6 +565,7 @@ void Foam::deformableContactFvPatchVectorField::force
 ) const
 {
     checkPair();
+    const pairTimer timer(slaveSide().cost_.forces);
     side sl;
     side ms;
     List<slaveFace> faces;
@@ -532,12 +596,38 @@ void Foam::deformableContactFvPatchVectorField::tangentAndCouplings
 ) const
 {
     // This side's own-face tangents and couplings [C13]
+    // One evaluation of the pair's derivatives per Jacobian: the side
+    // asked first computes both sides' and leaves the other's in the
+    // slave's cache, the other takes them if the iterate is the same
     checkPair();
+    const deformableContactFvPatchVectorField& s = slaveSide();
+    const pairTimer timer(s.cost_.tangent);
+    side sl;
+    side ms;
+    s.kinematics(sl);
+    s.partner().kinematics(ms);
+    if (s.takeCached(slave_, sl, ms, k.deltaT, df, c))
+    {
+        return;
+    }
     List<faceForceTangent> slaveOwn;
     List<faceForceTangent> masterOwn;
     DynamicList<faceCoupling> cs;
     DynamicList<faceCoupling> cm;
-    slaveSide().pairTangent(k.deltaT, slaveOwn, masterOwn, cs, cm);
+    s.pairTangent(sl, ms, k.deltaT, slaveOwn, masterOwn, cs, cm);
+
+    tangentCache& cache = s.cache_;
+    cache.valid = true;
+    cache.forSlave = !slave_;
+    cache.timeIndex = db().time().timeIndex();
+    cache.deltaT = k.deltaT;
+    cache.slaveD = sl.D;
+    cache.slaveF = sl.F;
+    cache.masterD = ms.D;
+    cache.masterF = ms.F;
+    cache.own.transfer(slave_ ? masterOwn : slaveOwn);
+    cache.couplings.transfer(slave_ ? cm : cs);
+
     df.transfer(slave_ ? slaveOwn : masterOwn);
     c.transfer(slave_ ? cs : cm);
 }
@@ -553,6 +643,7 @@ void Foam::deformableContactFvPatchVectorField::couplingCandidates
     // to the slave faces that may overlap it and to their other candidates
     checkPair();
     const deformableContactFvPatchVectorField& s = slaveSide();
+    const pairTimer timer(s.cost_.pattern);
     const deformableContactFvPatchVectorField& m = s.partner();
     side sl;
     side ms;
@@ -689,6 +780,20 @@ void Foam::deformableContactFvPatchVectorField::report
 ) const
 {
     reportFaces(k.time);
+    if (debug && slave_)
+    {
+        // The pair's share of the run's CPU time (the search is part of
+        // the forces and derivatives)
+        const pairCost& c = cost_;
+        const scalar run = max(db().time().elapsedCpuTime(), SMALL);
+        Info<< "    deformableContact " << patch().name() << ": CPU time "
+            << "search " << c.search << " s, forces " << c.forces
+            << " s, derivatives " << c.tangent << " s (" << c.nTangent
+            << " computed, " << c.nCached << " taken from the cache), "
+            << "pattern " << c.pattern << " s; together "
+            << 100*(c.forces + c.tangent + c.pattern)/run
+            << " % of the run's " << run << " s" << endl;
+    }
 }
 
 
