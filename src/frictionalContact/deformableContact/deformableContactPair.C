@@ -72,16 +72,16 @@ void Foam::deformableContactFvPatchVectorField::candidates
     // candidates start within one interval length before its own
     // [C11]: O(n log n)
     const pairTimer timer(cost_.search);
-    if (sl.Xv.size())
-    {
-        candidates3D(sl, ms, margin, cand);
-        return;
-    }
     const label nM = ms.X.size();
     cand.setSize(sl.X.size());
     if (nM == 0)
     {
         cand = labelList();
+        return;
+    }
+    if (sl.Xv.size())
+    {
+        candidates3D(sl, ms, margin, cand);
         return;
     }
     boundBox bb(ms.a, false);
@@ -155,20 +155,13 @@ void Foam::deformableContactFvPatchVectorField::candidates3D
     // [C11b] an octree of the master faces' deformed polygons; a slave
     // face's candidates are the master faces that meet its bounding box
     // widened by the search distance (and 'margin' times its diameter):
-    // O(n log n)
-    const label nM = ms.X.size();
-    cand.setSize(sl.X.size());
-    if (nM == 0)
-    {
-        cand = labelList();
-        return;
-    }
+    // O(n log n) (called by candidates(), which sized cand)
     label nPoints = 0;
     forAll(ms.v, m)
     {
         nPoints += ms.v[m].size();
     }
-    faceList faces(nM);
+    faceList faces(ms.v.size());
     pointField points(nPoints);
     nPoints = 0;
     forAll(ms.v, m)

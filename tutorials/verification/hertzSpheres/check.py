@@ -39,14 +39,7 @@ Rstar = 1/(1/R1 + 1/R2)
 Estar = 1/((1 - nu1*nu1)/E1 + (1 - nu2*nu2)/E2)
 h = param("contactZone")/param("nContact")
 
-rows = [r.split() for r in open(os.path.join(
-    case, "postProcessing", "contact", "upperSurface.dat")) if r[0] != "#"]
-last = rows[-1]
-Fz = float(last[3])
-pen = float(last[8])
-P = 4*Fz
-aH = (3*P*Rstar/(4*Estar))**(1.0/3.0)
-p0H = 3*P/(2*math.pi*aH*aH)
+P, pen, aH, p0H = hertzFit.sphereContact(case, "upperSurface", Rstar, Estar)
 
 time = foamio.latestTime(case)
 
