@@ -21,3 +21,16 @@ def fitHertz(points):
     but the outermost (the one face the contact edge may cut): the whole
     profile, not the one face nearest the edge, sets a."""
     return fitProfile(sorted(points)[:-1])
+
+
+def sphereContact(case, patch, R, Estar):
+    """The last step's contact force P of a quarter model (4 times the z
+    component in postProcessing/contact/<patch>.dat), its largest
+    penetration and Hertz's a and p0 for a sphere of radius R and modulus
+    E* ([V9], [V12])"""
+    import os
+    rows = [r.split() for r in open(os.path.join(
+        case, "postProcessing", "contact", patch + ".dat")) if r[0] != "#"]
+    P = 4*float(rows[-1][3])
+    a = (3*P*R/(4*Estar))**(1.0/3.0)
+    return P, float(rows[-1][8]), a, 3*P/(2*math.pi*a*a)

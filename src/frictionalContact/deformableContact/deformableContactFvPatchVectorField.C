@@ -34,6 +34,20 @@ void Foam::deformableContactFvPatchVectorField::setSegments()
     // [C11] a plane-strain face is a segment in the solved plane: its end
     // points are the extreme face points along the in-plane tangent
     const fvMesh& mesh = patch().boundaryMesh().mesh();
+    const polyPatch& pp = patch().patch();
+    const pointField& pts = mesh.points();
+    if (mesh.nGeometricD() == 3)
+    {
+        // [C11b] the face's polygon; its segment is not used
+        Xv_.setSize(pp.size());
+        forAll(pp, i)
+        {
+            Xv_[i] = pp[i].points(pts);
+        }
+        Xa_ = pp.faceCentres();
+        Xb_ = Xa_;
+        return;
+    }
     vector ez(Zero);
     for (direction d = 0; d < vector::nComponents; ++d)
     {
@@ -42,8 +56,6 @@ void Foam::deformableContactFvPatchVectorField::setSegments()
             ez[d] = 1;
         }
     }
-    const polyPatch& pp = patch().patch();
-    const pointField& pts = mesh.points();
     Xa_.setSize(pp.size());
     Xb_.setSize(pp.size());
     forAll(pp, i)
@@ -197,6 +209,12 @@ void Foam::deformableContactFvPatchVectorField::committedKinematics
     s.Xb = Xb_;
     s.a = Xa_ + s.D;
     s.b = Xb_ + s.D;
+    s.Xv = Xv_;
+    s.v = Xv_;
+    forAll(s.v, i)
+    {
+        s.v[i] += s.D[i];
+    }
     s.area = mag(s.S0);
     s.n = s.S0/s.area;
 }
@@ -223,6 +241,8 @@ void Foam::deformableContactFvPatchVectorField::kinematics(side& s) const
     s.n.setSize(n);
     s.Xa = Xa_;
     s.Xb = Xb_;
+    s.Xv = Xv_;
+    s.v = Xv_;
     forAll(fc, i)
     {
         const tensor& Gi = G[fc[i]];
@@ -242,10 +262,30 @@ void Foam::deformableContactFvPatchVectorField::faceGeometry
     const point x(s.X[i] + s.D[i]);
     s.a[i] = x + (s.F[i] & (s.Xa[i] - s.X[i]));
     s.b[i] = x + (s.F[i] & (s.Xb[i] - s.X[i]));
+    if (s.Xv.size())
+    {
+        // [C11b] the deformed polygon: linear within the face as D and F
+        const pointField& Xv = s.Xv[i];
+        pointField& v = s.v[i];
+        forAll(Xv, k)
+        {
+            v[k] = x + (s.F[i] & (Xv[k] - s.X[i]));
+        }
+    }
     // [C4] Nanson
     const vector A(det(s.F[i])*(inv(s.F[i]).T() & s.S0[i]));
     s.area[i] = mag(A);
     s.n[i] = A/max(s.area[i], VSMALL);
+}
+
+
+Foam::scalar Foam::deformableContactFvPatchVectorField::faceLength
+(
+    const side& s,
+    const label i
+)
+{
+    return s.Xv.size() ? Foam::sqrt(s.area[i]) : mag(s.b[i] - s.a[i]);
 }
 
 
@@ -347,12 +387,12 @@ Foam::deformableContactFvPatchVectorField::deformableContactFvPatchVectorField
             << p.boundaryMesh().mesh().boundaryMesh().names() << nl
             << exit(FatalIOError);
     }
-    if (mesh.nGeometricD() != 2)
+    if (mesh.nGeometricD() < 2)
     {
         FatalIOErrorInFunction(dict)
             << "Patch " << p.name() << " (dictionary " << dict.name()
-            << "): deformableContact is built for plane-strain (2-D)"
-            << " meshes only so far (doc/theory.md [C11]); this mesh is "
+            << "): deformableContact needs a plane-strain (2-D) or 3-D"
+            << " mesh (doc/theory.md [C11]); this mesh is "
             << mesh.nGeometricD() << "-D" << nl << exit(FatalIOError);
     }
     for (const polyPatch& pp : mesh.boundaryMesh())
@@ -443,6 +483,7 @@ Foam::deformableContactFvPatchVectorField::deformableContactFvPatchVectorField
     contactFaces(),
     Xa_(ptf.Xa_),
     Xb_(ptf.Xb_),
+    Xv_(ptf.Xv_),
     committedTimeIndex_(-1)
 {
     copyPair(ptf);
@@ -460,6 +501,7 @@ Foam::deformableContactFvPatchVectorField::deformableContactFvPatchVectorField
     contactFaces(),
     Xa_(ptf.Xa_),
     Xb_(ptf.Xb_),
+    Xv_(ptf.Xv_),
     committedTimeIndex_(-1)
 {
     copyPair(ptf);

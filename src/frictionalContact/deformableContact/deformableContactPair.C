@@ -11,6 +11,11 @@ Description
 
 #include "deformableContactFvPatchVectorField.H"
 #include "volFields.H"
+#include "polygonOverlap.H"
+#include "indexedOctree.H"
+#include "treeDataPrimitivePatch.H"
+#include "primitiveFacePatch.H"
+#include <ctime>
 #include <algorithm>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -18,13 +23,34 @@ Description
 namespace Foam
 {
 
-//- One overlap of a slave face with a master face [C11]
+//- Adds the CPU time of its scope to 'sum' [s]; std::clock resolves
+//  microseconds where OpenFOAM's cpuTime counts 10 ms ticks, too coarse for
+//  the many short calls of a pair
+class pairTimer
+{
+    scalar& sum_;
+    const std::clock_t start_ = std::clock();
+
+public:
+
+    explicit pairTimer(scalar& sum)
+    :
+        sum_(sum)
+    {}
+
+    ~pairTimer()
+    {
+        sum_ += scalar(std::clock() - start_)/CLOCKS_PER_SEC;
+    }
+};
+
+//- One overlap of a slave face with a master face [C11], [C11b]
 struct faceOverlap
 {
     label master;
-    scalar length;      // overlap length l_sm, in the master's measure
-    scalar projected;   // length of the slave segment's projection
-    scalar gap;         // (x_s - x_m) . n_m at the overlap's midpoint
+    scalar length;      // overlap length (3-D: area) l_sm, master measure
+    scalar projected;   // measure of the slave face's projection
+    scalar gap;         // (x_s - x_m) . n_m at the overlap's centroid
 };
 
 } // End namespace Foam
@@ -45,11 +71,17 @@ void Foam::deformableContactFvPatchVectorField::candidates
     // their interval (widened by the search distance); a slave face's
     // candidates start within one interval length before its own
     // [C11]: O(n log n)
+    const pairTimer timer(cost_.search);
     const label nM = ms.X.size();
     cand.setSize(sl.X.size());
     if (nM == 0)
     {
         cand = labelList();
+        return;
+    }
+    if (sl.Xv.size())
+    {
+        candidates3D(sl, ms, margin, cand);
         return;
     }
     boundBox bb(ms.a, false);
@@ -112,6 +144,71 @@ void Foam::deformableContactFvPatchVectorField::candidates
 }
 
 
+void Foam::deformableContactFvPatchVectorField::candidates3D
+(
+    const side& sl,
+    const side& ms,
+    const scalar margin,
+    labelListList& cand
+) const
+{
+    // [C11b] an octree of the master faces' deformed polygons; a slave
+    // face's candidates are the master faces that meet its bounding box
+    // widened by the search distance (and 'margin' times its diameter):
+    // O(n log n) (called by candidates(), which sized cand)
+    label nPoints = 0;
+    forAll(ms.v, m)
+    {
+        nPoints += ms.v[m].size();
+    }
+    faceList faces(ms.v.size());
+    pointField points(nPoints);
+    nPoints = 0;
+    forAll(ms.v, m)
+    {
+        face& f = faces[m];
+        f.setSize(ms.v[m].size());
+        forAll(f, k)
+        {
+            f[k] = nPoints;
+            points[nPoints++] = ms.v[m][k];
+        }
+    }
+    const primitiveFacePatch surface(faces, points);
+    treeBoundBox overall(points);
+    overall.inflate(1e-4);
+    typedef treeDataPrimitivePatch<primitiveFacePatch> treeType;
+    const indexedOctree<treeType> tree
+    (
+        treeType(true, surface, 1e-6),
+        overall,
+        8,
+        10,
+        3.0
+    );
+
+    DynamicList<label> found(8);
+    forAll(cand, i)
+    {
+        treeBoundBox bb(sl.v[i]);
+        const scalar widen = searchDistance_ + margin*mag(bb.span());
+        bb.min() -= vector::uniform(widen);
+        bb.max() += vector::uniform(widen);
+        found.clear();
+        for (const label m : tree.findBox(bb))
+        {
+            // facing surfaces only
+            if ((sl.n[i] & ms.n[m]) < 0)
+            {
+                found.append(m);
+            }
+        }
+        Foam::sort(found);
+        cand[i] = found;
+    }
+}
+
+
 void Foam::deformableContactFvPatchVectorField::evaluateFace
 (
     const label i,
@@ -132,41 +229,69 @@ void Foam::deformableContactFvPatchVectorField::evaluateFace
     const point& bs = sl.b[i];
 
     DynamicList<faceOverlap> overlaps(8);
-    for (const label m : cand)
+    if (sl.Xv.size())
     {
-        const vector& nm = ms.n[m];
-        if ((sl.n[i] & nm) >= 0)
+        // [C11b] polygons
+        const point xs(sl.X[i] + sl.D[i]);
+        for (const label m : cand)
         {
-            continue;
+            scalar area;
+            scalar projected;
+            scalar g;
+            if
+            (
+                polygonOverlap::overlap
+                (
+                    sl.v[i], xs, sl.n[i],
+                    ms.v[m], ms.X[m] + ms.D[m], ms.n[m],
+                    area, projected, g
+                )
+             && mag(g) <= searchDistance_
+            )
+            {
+                overlaps.append({m, area, projected, g});
+            }
         }
-        const vector e(ms.b[m] - ms.a[m]);
-        const scalar Lm = mag(e);
-        if (Lm < VSMALL)
+    }
+    else
+    {
+        // [C11] segments
+        for (const label m : cand)
         {
-            continue;
+            const vector& nm = ms.n[m];
+            if ((sl.n[i] & nm) >= 0)
+            {
+                continue;
+            }
+            const vector e(ms.b[m] - ms.a[m]);
+            const scalar Lm = mag(e);
+            if (Lm < VSMALL)
+            {
+                continue;
+            }
+            const vector tau(e/Lm);
+            const scalar xa = (as - ms.a[m]) & tau;
+            const scalar xb = (bs - ms.a[m]) & tau;
+            const scalar l0 = max(min(xa, xb), scalar(0));
+            const scalar l1 = min(max(xa, xb), Lm);
+            if (l1 <= l0)
+            {
+                continue;
+            }
+            // the gap is linear over the overlap: its midpoint value is its
+            // mean
+            const scalar xc = 0.5*(l0 + l1);
+            const scalar lambda =
+                mag(xb - xa) > VSMALL ? (xc - xa)/(xb - xa) : 0.5;
+            const point xs(as + lambda*(bs - as));
+            const point xm(ms.a[m] + xc*tau);
+            const scalar g = (xs - xm) & nm;
+            if (mag(g) > searchDistance_)
+            {
+                continue;
+            }
+            overlaps.append({m, l1 - l0, mag(xb - xa), g});
         }
-        const vector tau(e/Lm);
-        const scalar xa = (as - ms.a[m]) & tau;
-        const scalar xb = (bs - ms.a[m]) & tau;
-        const scalar l0 = max(min(xa, xb), scalar(0));
-        const scalar l1 = min(max(xa, xb), Lm);
-        if (l1 <= l0)
-        {
-            continue;
-        }
-        // the gap is linear over the overlap: its midpoint value is its
-        // mean
-        const scalar xc = 0.5*(l0 + l1);
-        const scalar lambda =
-            mag(xb - xa) > VSMALL ? (xc - xa)/(xb - xa) : 0.5;
-        const point xs(as + lambda*(bs - as));
-        const point xm(ms.a[m] + xc*tau);
-        const scalar g = (xs - xm) & nm;
-        if (mag(g) > searchDistance_)
-        {
-            continue;
-        }
-        overlaps.append({m, l1 - l0, mag(xb - xa), g});
     }
 
     scalar total = 0;
@@ -242,8 +367,39 @@ void Foam::deformableContactFvPatchVectorField::evaluatePair
 }
 
 
+bool Foam::deformableContactFvPatchVectorField::takeCached
+(
+    const bool forSlave,
+    const side& sl,
+    const side& ms,
+    const scalar deltaT,
+    List<faceForceTangent>& own,
+    DynamicList<faceCoupling>& c
+) const
+{
+    tangentCache& k = cache_;
+    const bool hit =
+        k.valid
+     && k.forSlave == forSlave
+     && k.timeIndex == db().time().timeIndex()
+     && k.deltaT == deltaT
+     && k.slaveD == sl.D && k.slaveF == sl.F
+     && k.masterD == ms.D && k.masterF == ms.F;
+    if (hit)
+    {
+        own.transfer(k.own);
+        c.transfer(k.couplings);
+        ++cost_.nCached;
+    }
+    k = tangentCache();
+    return hit;
+}
+
+
 void Foam::deformableContactFvPatchVectorField::pairTangent
 (
+    side& sl,
+    side& ms,
     const scalar deltaT,
     List<faceForceTangent>& slaveOwn,
     List<faceForceTangent>& masterOwn,
@@ -262,10 +418,6 @@ void Foam::deformableContactFvPatchVectorField::pairTangent
     const label slavePatch = patch().index();
     const label masterPatch = m.patch().index();
 
-    side sl;
-    side ms;
-    kinematics(sl);
-    m.kinematics(ms);
     labelListList cand;
     candidates(sl, ms, 0, cand);
 
@@ -317,7 +469,7 @@ void Foam::deformableContactFvPatchVectorField::pairTangent
         {
             side& s = inp < 0 ? sl : ms;
             const label fi = inp < 0 ? i : masters[inp];
-            const scalar hD = 1e-6*mag(s.b[fi] - s.a[fi]);
+            const scalar hD = 1e-6*faceLength(s, fi);
             const scalar hF = 1e-6;
             const vector D0(s.D[fi]);
             const tensor F0(s.F[fi]);
@@ -393,6 +545,7 @@ void Foam::deformableContactFvPatchVectorField::pairTangent
             }
         }
     }
+    ++cost_.nTangent;
 }
 
 
@@ -405,6 +558,7 @@ void Foam::deformableContactFvPatchVectorField::force
 ) const
 {
     checkPair();
+    const pairTimer timer(slaveSide().cost_.forces);
     side sl;
     side ms;
     List<slaveFace> faces;
@@ -435,12 +589,38 @@ void Foam::deformableContactFvPatchVectorField::tangentAndCouplings
 ) const
 {
     // This side's own-face tangents and couplings [C13]
+    // One evaluation of the pair's derivatives per Jacobian: the side
+    // asked first computes both sides' and leaves the other's in the
+    // slave's cache, the other takes them if the iterate is the same
     checkPair();
+    const deformableContactFvPatchVectorField& s = slaveSide();
+    const pairTimer timer(s.cost_.tangent);
+    side sl;
+    side ms;
+    s.kinematics(sl);
+    s.partner().kinematics(ms);
+    if (s.takeCached(slave_, sl, ms, k.deltaT, df, c))
+    {
+        return;
+    }
     List<faceForceTangent> slaveOwn;
     List<faceForceTangent> masterOwn;
     DynamicList<faceCoupling> cs;
     DynamicList<faceCoupling> cm;
-    slaveSide().pairTangent(k.deltaT, slaveOwn, masterOwn, cs, cm);
+    s.pairTangent(sl, ms, k.deltaT, slaveOwn, masterOwn, cs, cm);
+
+    tangentCache& cache = s.cache_;
+    cache.valid = true;
+    cache.forSlave = !slave_;
+    cache.timeIndex = db().time().timeIndex();
+    cache.deltaT = k.deltaT;
+    cache.slaveD = sl.D;
+    cache.slaveF = sl.F;
+    cache.masterD = ms.D;
+    cache.masterF = ms.F;
+    cache.own.transfer(slave_ ? masterOwn : slaveOwn);
+    cache.couplings.transfer(slave_ ? cm : cs);
+
     df.transfer(slave_ ? slaveOwn : masterOwn);
     c.transfer(slave_ ? cs : cm);
 }
@@ -456,6 +636,7 @@ void Foam::deformableContactFvPatchVectorField::couplingCandidates
     // to the slave faces that may overlap it and to their other candidates
     checkPair();
     const deformableContactFvPatchVectorField& s = slaveSide();
+    const pairTimer timer(s.cost_.pattern);
     const deformableContactFvPatchVectorField& m = s.partner();
     side sl;
     side ms;
@@ -592,6 +773,20 @@ void Foam::deformableContactFvPatchVectorField::report
 ) const
 {
     reportFaces(k.time);
+    if (debug && slave_)
+    {
+        // The pair's share of the run's CPU time (the search is part of
+        // the forces and derivatives)
+        const pairCost& c = cost_;
+        const scalar run = max(db().time().elapsedCpuTime(), SMALL);
+        Info<< "    deformableContact " << patch().name() << ": CPU time "
+            << "search " << c.search << " s, forces " << c.forces
+            << " s, derivatives " << c.tangent << " s (" << c.nTangent
+            << " computed, " << c.nCached << " taken from the cache), "
+            << "pattern " << c.pattern << " s; together "
+            << 100*(c.forces + c.tangent + c.pattern)/run
+            << " % of the run's " << run << " s" << endl;
+    }
 }
 
 

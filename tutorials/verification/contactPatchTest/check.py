@@ -5,7 +5,8 @@
 # is uniform: every face of both contact surfaces carries p per reference
 # area (nominalContactPressure) and the same friction traction. Also the
 # momentum of the pair: the contact forces on the two surfaces sum to zero.
-# Usage: check.py <case> <p> <tau>. Writes <case>/results.dat.
+# Usage: check.py <case> <p> <tau> [<A0>] (A0: the interface's reference
+# area, 0.1 m^2 in 2-D, 1 m^2 in 3-D). Writes <case>/results.dat.
 import os
 import sys
 
@@ -14,7 +15,7 @@ import foamio
 
 case, p, tau = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
 slave, master = "upperBottom", "lowerTop"
-A0 = 1.0*0.1        # reference area of the interface [m^2]
+A0 = float(sys.argv[4]) if len(sys.argv) > 4 else 1.0*0.1
 
 t = foamio.latestTime(case)
 res = {}

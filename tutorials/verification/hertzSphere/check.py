@@ -29,14 +29,7 @@ R, E, nu = 0.01, 200e9, 0.3
 Estar = E/(1 - nu*nu)
 
 case = sys.argv[1] if len(sys.argv) > 1 else "."
-rows = [r.split() for r in open(os.path.join(
-    case, "postProcessing", "contact", "contact.dat")) if r[0] != "#"]
-last = rows[-1]
-Fz = float(last[3])
-pen = float(last[8])
-P = 4*Fz
-aH = (3*P*R/(4*Estar))**(1.0/3.0)
-p0H = 3*P/(2*math.pi*aH*aH)
+P, pen, aH, p0H = hertzFit.sphereContact(case, "contact", R, Estar)
 
 time = foamio.latestTime(case)
 p = foamio.readPatchField(os.path.join(case, time, "nominalContactPressure"),

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-# Mesh-convergence table of the Hertz sphere (Allrun -refinement):
-#   convergence.py [-results FILE] <case> <case> ...
+# Mesh-convergence table of the Hertz sphere tutorials (hertzSphere,
+# hertzSpheres: Allrun -refinement):
+#   hertzConvergence.py [-results FILE] <case> <case> ...
 # per case (each run and checked) the mesh size N (nContact), cells, faces
 # in contact, wall time, Newton iterations per step, the errors of p0 and a
 # against Hertz and the observed orders between successive meshes,
@@ -25,7 +26,7 @@ for case in args:
     n = int(re.search(r"^nContact\s+(\d+);", open(os.path.join(
         case, "system", "meshParameters")).read(), re.M).group(1))
     log = open(os.path.join(case, "log.largeStrainSolidFoam")).read()
-    cells = int(re.search(r"(\d+) cells", log).group(1))
+    cells = int(re.search(r"-D, (\d+) cells", log).group(1))
     perStep = float(re.search(r"\(([\d.]+) per step\)", log).group(1))
     rt = os.path.join(case, "runTime")
     wall = foamio.readResults(rt)["elapsed"] if os.path.isfile(rt) \
