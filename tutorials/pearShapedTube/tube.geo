@@ -11,7 +11,8 @@
 // wallRatio: the through-wall grading, largest over
 // smallest cell of each half of the wall, the cells thinnest at both
 // surfaces (blockMesh's wallGrading ((0.5 0.5 r) (0.5 0.5 1/r)); 1:
-// uniform). From system/meshParameters.
+// uniform). From system/meshParameters (nQuarter: its nTop; ../Allrun -gmsh
+// needs the cells around uniform, nBottom = nTop and both gradings 1).
 DefineConstant[ nWall = 4, nQuarter = 90, wallRatio = 1 ];
 
 Ri = 0.0269;
