@@ -576,6 +576,10 @@ void Foam::solidDiscretisation::jacobian(blockSparseMatrix& M) const
             );
         }
     }
+
+    // [C14] the pattern is rebuilt on every processor or on none (the
+    // rebuild communicates: the contact pairs' candidates, the matrix)
+    reduce(patternMissed_, orOp<bool>());
 }
 
 
