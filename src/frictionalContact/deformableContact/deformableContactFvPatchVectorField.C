@@ -9,6 +9,7 @@ License
 #include "wedgePolyPatch.H"
 #include "volFields.H"
 #include "regionSplit.H"
+#include "HashOps.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -147,6 +148,10 @@ void Foam::deformableContactFvPatchVectorField::checkPair() const
     {
         own.insert(regions[c]);
     }
+    // [C14] the regions are numbered globally; the faces of this patch may
+    // lie on other processors
+    Pstream::combineGather(own, HashSetOps::plusEqOp<label, Foam::Hash<label>>());
+    Pstream::combineScatter(own);
     for (const label c : mesh.boundary()[pi].faceCells())
     {
         if (own.found(regions[c]))
@@ -169,7 +174,7 @@ void Foam::deformableContactFvPatchVectorField::checkPair() const
         side sl;
         side ms;
         s.committedKinematics(sl);
-        s.partner().committedKinematics(ms);
+        s.partnerKinematics(ms, true);
         List<slaveFace> faces;
         s.evaluatePair(sl, ms, mesh.time().deltaTValue(), faces);
         const scalarField& V = mesh.V();
@@ -298,9 +303,8 @@ void Foam::deformableContactFvPatchVectorField::evaluate
 ) const
 {
     const deformableContactFvPatchVectorField& s = slaveSide();
-    const deformableContactFvPatchVectorField& m = s.partner();
     s.kinematics(sl);
-    m.kinematics(ms);
+    s.partnerKinematics(ms, false);
     s.evaluatePair(sl, ms, deltaT, faces);
 }
 
@@ -406,21 +410,15 @@ Foam::deformableContactFvPatchVectorField::deformableContactFvPatchVectorField
                 << ")" << nl << exit(FatalIOError);
         }
     }
-    if (Pstream::parRun())
-    {
-        FatalIOErrorInFunction(dict)
-            << "Patch " << p.name() << " (dictionary " << dict.name()
-            << "): deformableContact runs serial only so far" << nl
-            << exit(FatalIOError);
-    }
-
-    // Default search distance: two cell depths
+    // Default search distance: two cell depths (the same on every
+    // processor, whether it holds faces of the patch or not [C14])
     const scalarField& V = mesh.V();
     scalar hMax = 0;
     forAll(p.faceCells(), i)
     {
         hMax = max(hMax, V[p.faceCells()[i]]/p.magSf()[i]);
     }
+    reduce(hMax, maxOp<scalar>());
     searchDistance_ =
         dict.lookupOrDefault<scalar>("searchDistance", 2*max(hMax, SMALL));
     if (!(searchDistance_ > 0))

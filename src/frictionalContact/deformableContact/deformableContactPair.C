@@ -378,13 +378,16 @@ bool Foam::deformableContactFvPatchVectorField::takeCached
 ) const
 {
     tangentCache& k = cache_;
-    const bool hit =
+    bool hit =
         k.valid
      && k.forSlave == forSlave
      && k.timeIndex == db().time().timeIndex()
      && k.deltaT == deltaT
      && k.slaveD == sl.D && k.slaveF == sl.F
      && k.masterD == ms.D && k.masterF == ms.F;
+    // [C14] every processor takes the cache or none (the evaluation
+    // communicates)
+    reduce(hit, andOp<bool>());
     if (hit)
     {
         own.transfer(k.own);
@@ -417,6 +420,9 @@ void Foam::deformableContactFvPatchVectorField::pairTangent
     const deformableContactFvPatchVectorField& m = partner();
     const label slavePatch = patch().index();
     const label masterPatch = m.patch().index();
+    // a master row's column of slave face i: the slave's global face
+    // numbering (faceCoupling; i in serial) [C14]
+    const globalIndex slaveFaces(sl.X.size());
 
     labelListList cand;
     candidates(sl, ms, 0, cand);
@@ -539,7 +545,7 @@ void Foam::deformableContactFvPatchVectorField::pairTangent
                 faceCoupling e;
                 e.face = row;
                 e.patch = slaveCol ? slavePatch : masterPatch;
-                e.otherFace = col;
+                e.otherFace = slaveCol ? slaveFaces.toGlobal(col) : col;
                 e.df = d[o];
                 (slaveRow ? slaveCoupling : masterCoupling).append(e);
             }
@@ -566,7 +572,13 @@ void Foam::deformableContactFvPatchVectorField::force
     vectorField fs;
     vectorField fm;
     pairForces(faces, ms.X.size(), fs, fm);
-    f = slave_ ? fs : fm;
+    if (slave_)
+    {
+        f = fs;
+        return;
+    }
+    reduceMasterForces(fm, patch().size());
+    f = fm;
 }
 
 
@@ -598,7 +610,7 @@ void Foam::deformableContactFvPatchVectorField::tangentAndCouplings
     side sl;
     side ms;
     s.kinematics(sl);
-    s.partner().kinematics(ms);
+    s.partnerKinematics(ms, false);
     if (s.takeCached(slave_, sl, ms, k.deltaT, df, c))
     {
         return;
@@ -608,6 +620,31 @@ void Foam::deformableContactFvPatchVectorField::tangentAndCouplings
     DynamicList<faceCoupling> cs;
     DynamicList<faceCoupling> cm;
     s.pairTangent(sl, ms, k.deltaT, slaveOwn, masterOwn, cs, cm);
+    if (Pstream::parRun())
+    {
+        // [C14] the master rows (global numbering, this processor's slave
+        // faces' shares) to the master faces' processors; the own-face
+        // tangents travel as couplings of a face to itself
+        const label masterPatch = s.partner().patch().index();
+        forAll(masterOwn, mi)
+        {
+            const faceForceTangent& t = masterOwn[mi];
+            if (t.dfdD != tensor::zero || t.dfdF[0] != tensor::zero
+             || t.dfdF[1] != tensor::zero || t.dfdF[2] != tensor::zero)
+            {
+                faceCoupling e;
+                e.face = mi;
+                e.patch = masterPatch;
+                e.otherFace = mi;
+                e.df = t;
+                cm.append(e);
+            }
+        }
+        const globalIndex masterFaces(s.partner().patch().size());
+        sendToRowOwners(cm, masterFaces);
+        masterOwn.setSize(masterFaces.localSize());
+        masterOwn = faceForceTangent();
+    }
 
     tangentCache& cache = s.cache_;
     cache.valid = true;
@@ -641,9 +678,12 @@ void Foam::deformableContactFvPatchVectorField::couplingCandidates
     side sl;
     side ms;
     s.kinematics(sl);
-    m.kinematics(ms);
+    s.partnerKinematics(ms, false);
     labelListList cand;
     s.candidates(sl, ms, margin, cand);
+    // [C14] master faces in the master's global numbering (the gathered
+    // surface), slave columns of master rows in the slave's
+    const globalIndex slaveFaces(sl.X.size());
 
     c.clear();
     faceCoupling e;
@@ -661,7 +701,7 @@ void Foam::deformableContactFvPatchVectorField::couplingCandidates
             }
             e.face = mi;
             e.patch = s.patch().index();
-            e.otherFace = i;
+            e.otherFace = slaveFaces.toGlobal(i);
             c.append(e);
             for (const label mj : cand[i])
             {
@@ -673,6 +713,10 @@ void Foam::deformableContactFvPatchVectorField::couplingCandidates
                 }
             }
         }
+    }
+    if (!slave_)
+    {
+        sendToRowOwners(c, globalIndex(patch().size()));
     }
 }
 
@@ -725,6 +769,7 @@ void Foam::deformableContactFvPatchVectorField::commit
         evaluate(sl, ms, faces, k.deltaT);
         vectorField fs;
         pairForces(faces, ms.X.size(), fs, committedMasterForce_);
+        reduceMasterForces(committedMasterForce_, partner().patch().size());
         committedTimeIndex_ = timeIndex;
 
         beginCommit();
@@ -755,14 +800,16 @@ void Foam::deformableContactFvPatchVectorField::commit
     if (s.committedTimeIndex_ == timeIndex)
     {
         fm = s.committedMasterForce_;
-        kinematics(ms);
     }
     else
     {
         evaluate(sl, ms, faces, k.deltaT);
         vectorField fs;
         pairForces(faces, ms.X.size(), fs, fm);
+        reduceMasterForces(fm, patch().size());
     }
+    // this processor's master faces
+    kinematics(ms);
     commitReaction(fm, ms.n, ms.area, mag(ms.S0));
 }
 

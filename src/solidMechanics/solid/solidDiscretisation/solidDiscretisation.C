@@ -5,6 +5,7 @@ License
 
 #include "solidDiscretisation.H"
 #include "calculatedFvPatchFields.H"
+#include "ListListOps.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -205,6 +206,79 @@ Foam::tensor Foam::solidDiscretisation::boundaryFaceF
 }
 
 
+void Foam::solidDiscretisation::gatherCouplingStencils()
+{
+    // [C13] in parallel a contact pair's face may couple to a face of the
+    // other surface on another processor: every processor keeps the
+    // stencils of all faces of the coupled force patches
+    couplingStencils_.setSize(mesh_.boundary().size());
+    couplingDelta_.setSize(mesh_.boundary().size());
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        if
+        (
+            bcs_.kind(patchi) != solidBoundaries::FORCE
+         || !bcs_.forcePatch(patchi).couplesToOtherFaces()
+        )
+        {
+            continue;
+        }
+        const labelUList& fc = mesh_.boundary()[patchi].faceCells();
+        List<List<gradientStencil>> stencils(Pstream::nProcs());
+        List<vectorField> delta(Pstream::nProcs());
+        List<gradientStencil>& own = stencils[Pstream::myProcNo()];
+        own.setSize(fc.size());
+        forAll(fc, i)
+        {
+            own[i] = grad_.stencil(fc[i]);
+        }
+        delta[Pstream::myProcNo()] = patchDelta_[patchi];
+        Pstream::gatherList(stencils);
+        Pstream::scatterList(stencils);
+        Pstream::gatherList(delta);
+        Pstream::scatterList(delta);
+        couplingStencils_[patchi] =
+            ListListOps::combine<List<gradientStencil>>
+            (
+                stencils, accessOp<List<gradientStencil>>()
+            );
+        couplingDelta_[patchi] =
+            ListListOps::combine<vectorField>(delta, accessOp<vectorField>());
+    }
+}
+
+
+const Foam::gradientStencil& Foam::solidDiscretisation::couplingStencil
+(
+    const label patchi,
+    const label facei
+) const
+{
+    if (Pstream::parRun())
+    {
+        return couplingStencils_[patchi][facei];
+    }
+    return grad_.stencil(mesh_.boundary()[patchi].faceCells()[facei]);
+}
+
+
+const Foam::vector& Foam::solidDiscretisation::couplingDelta
+(
+    const label patchi,
+    const label facei
+) const
+{
+    return
+        Pstream::parRun()
+      ? couplingDelta_[patchi][facei]
+      : patchDelta_[patchi][facei];
+}
+
+
 void Foam::solidDiscretisation::forcePatchKinematics
 (
     const label patchi,
@@ -312,6 +386,7 @@ Foam::solidDiscretisation::solidDiscretisation
           : tmp<vectorField>(p.Cf() - p.Cn());
         patchNormal_[patchi] = p.nf();
     }
+    gatherCouplingStencils();
 
     // Constructing from a tmp drops the write option: set it here so the
     // plastic history reaches every written time (and a restart)

@@ -447,9 +447,8 @@ void Foam::solidDiscretisation::addForceCouplings
     for (const faceCoupling& e : c)
     {
         const label P = rowCells[e.face];
-        const label Q = mesh_.boundary()[e.patch].faceCells()[e.otherFace];
-        const vector& d = patchDelta_[e.patch][e.otherFace];
-        const gradientStencil& s = grad_.stencil(Q);
+        const vector& d = couplingDelta(e.patch, e.otherFace);
+        const gradientStencil& s = couplingStencil(e.patch, e.otherFace);
         add(P, s.cell, forceBlock(e.df, dDface(d, s.self, true), s.self));
         forAll(s.cells, j)
         {
@@ -518,10 +517,7 @@ Foam::labelListList Foam::solidDiscretisation::jacobianPattern() const
             addStencil
             (
                 faceCells[e.face],
-                grad_.stencil
-                (
-                    mesh_.boundary()[e.patch].faceCells()[e.otherFace]
-                )
+                couplingStencil(e.patch, e.otherFace)
             );
         }
     }
@@ -580,6 +576,10 @@ void Foam::solidDiscretisation::jacobian(blockSparseMatrix& M) const
             );
         }
     }
+
+    // [C14] the pattern is rebuilt on every processor or on none (the
+    // rebuild communicates: the contact pairs' candidates, the matrix)
+    reduce(patternMissed_, orOp<bool>());
 }
 
 
