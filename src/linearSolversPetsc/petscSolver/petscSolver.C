@@ -295,6 +295,26 @@ bool Foam::linearSolvers::petscSolver::setUpPreconditioner()
                 break;
             }
         }
+        if (!checkedOptions_)
+        {
+            // The unused-option check waits for the first solve, which a
+            // failed set-up never reaches: a misspelt entry may be why it
+            // failed, so the reason names what PETSc has not read yet (not
+            // fatal: a numerical failure is the caller's to retry)
+            std::string fromDict, fromElsewhere;
+            check
+            (
+                options_.unused(fromDict, fromElsewhere),
+                "listing the options"
+            );
+            if (fromDict.size() || fromElsewhere.size())
+            {
+                setUpFailure_ +=
+                    "; PETSc has not read the options" + fromDict
+                  + fromElsewhere + " so far (misspelt? 'options' in "
+                  + dict_.name() + ")";
+            }
+        }
         Info<< "Linear solver petsc: preconditioner set-up failed ("
             << setUpFailure_.c_str() << ")" << endl;
 

@@ -27,7 +27,8 @@ Description
         unused PETSC_OPTIONS entry under the prefix (error after the first
         solve); PETSC_OPTIONS overriding the dictionary; a zero row with
         MUMPS and with ILU (update() false or solve() not converged with
-        the reason, then a good matrix is solved again); maxIterations
+        the reason, then a good matrix is solved again; with a misspelt
+        raw option the failed set-up's reason names it); maxIterations
         reached (not converged, reason names maxIterations).
 
     With -report <file> (argList; serial, or -parallel under mpirun): the
@@ -467,6 +468,39 @@ void errors()
             q.converged
          && maxError(x, eo::exactSolution(M())) < tolKrylov
         );
+    }
+
+    {
+        // A set-up that fails before the first solve (the unused-option
+        // check's moment) names the entries PETSc has not read
+        solverDict d
+        (
+            "type petsc; preconditioner mumps;"
+            "options { pc_factor_mat_ordering_typ nd; }"
+        );
+        autoPtr<linearSolver> s = linearSolver::New(d(), M());
+        scalarList& v = const_cast<scalarList&>(M->values());
+        const scalarList good(v);
+        const label r = 5, nc = M->nComponents();
+        const label first = M->rowStart()[r]*nc*nc;
+        for (label i = first; i < M->rowStart()[r + 1]*nc*nc; ++i)
+        {
+            v[i] = 0;
+        }
+        const bool updated = s->update();
+        const Eigen::VectorXd b = eo::rightHandSide(M());
+        Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
+        const linearSolver::performance p = s->solve(b, x, 1e-10);
+        Info<< "    mumps, zero row, misspelt option: update " << updated
+            << ", reason: " << p.reason.c_str() << endl;
+        unitTest::checkTrue
+        (
+            "failed set-up before the first solve: the reason names the"
+            " unread option",
+            !updated && !p.converged
+         && p.reason.find("pc_factor_mat_ordering_typ") != std::string::npos
+        );
+        v = good;
     }
 
     FatalIOError.dontThrowExceptions();
