@@ -18,6 +18,8 @@ Description
         with rejectPredictor the solve restarts from xStart (the second
         Jacobian is taken there) and converges; without, it does not
         (the second Jacobian is taken elsewhere) [S16b];
+      - initialForcingTerm sets the first linear solve's relative
+        tolerance (default 1e-2);
       - the displacement test by the error estimate stops earlier than by
         the last correction, and the returned iterate's true error is
         within the tolerance [S16b].
@@ -52,6 +54,8 @@ public:
     Eigen::VectorXd b;
     Eigen::MatrixXd M;
     List<scalar> jacobianResiduals;
+    //- The relative tolerance asked of every linear solve
+    List<scalar> relTols;
 
     explicit testSystem(const kindType k)
     :
@@ -139,6 +143,7 @@ public:
         const scalar relTol
     )
     {
+        relTols.append(relTol);
         dx = M.lu().solve(r);
         linearSolver::performance p;
         p.converged = true;
@@ -317,6 +322,19 @@ int main()
             sys2.jacobianResiduals.size() >= 2
          && sys2.jacobianResiduals[1] != RStart.norm()
         );
+    }
+
+    Info<< "initialForcingTerm" << endl;
+    {
+        testSystem a(testSystem::SPRINGS), b(testSystem::SPRINGS);
+        newtonSolver byDefault(controls(""));
+        newtonSolver tight(controls("initialForcingTerm 1e-4;"));
+        Eigen::VectorXd x(Eigen::VectorXd::Zero(3)), x0(x);
+        byDefault.solve(a, x, x0);
+        x.setZero();
+        tight.solve(b, x, x0);
+        checkAbs("default first tolerance", a.relTols[0], 1e-2, 1e-15);
+        checkAbs("set first tolerance", b.relTols[0], 1e-4, 1e-15);
     }
 
     Info<< "Displacement test: error estimate against last correction"

@@ -75,6 +75,7 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
     verbose_(dict.lookupOrDefault<bool>("verbose", false)),
     fullStepFallback_(dict.lookupOrDefault<bool>("fullStepFallback", false)),
     rejectPredictor_(dict.lookupOrDefault<bool>("rejectPredictor", true)),
+    initialForcing_(dict.lookupOrDefault<scalar>("initialForcingTerm", 1e-2)),
     estimateError_(readDisplacementTest(dict)),
     holdLinearisation_
     (
@@ -103,6 +104,13 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
             << " (got " << forceTol_ << "), displacementTolerance > 0 (got "
             << displacementTol_ << ") and maxNewtonIterations >= 1 (got "
             << maxNewton_ << ")" << nl << exit(FatalIOError);
+    }
+    if (!(initialForcing_ > 0) || initialForcing_ >= 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'initialForcingTerm' in dictionary " << dict.name()
+            << " is " << initialForcing_ << "; expected a value in (0, 1)"
+            << nl << exit(FatalIOError);
     }
     if (acceptableForceTol_ < 0 || stallIterations_ < 1 || krylovRefresh_ < 0)
     {
@@ -313,7 +321,7 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
         // with an outdated preconditioner then misleads Newton further
         if (firstSolve)
         {
-            eta = 1e-2;
+            eta = initialForcing_;
             firstSolve = false;
         }
         else
