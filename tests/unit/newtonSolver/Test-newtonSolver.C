@@ -17,7 +17,7 @@ Description
         just short of contact (no fraction of the first step lowers |R|):
         with rejectPredictor the solve restarts from xStart (the second
         Jacobian is taken there) and converges; without, it does not
-        (the second Jacobian is taken elsewhere) [S16b];
+        (the default; the second Jacobian is taken elsewhere) [S16b];
       - initialForcingTerm sets the first linear solve's relative
         tolerance (default 1e-2);
       - the displacement test by the error estimate stops earlier than by
@@ -293,7 +293,10 @@ int main()
            /(1 + testSystem::Kp);
 
         testSystem sys(testSystem::PENALTY);
-        newtonSolver newton(controls("maxNewtonIterations 4;"));
+        newtonSolver newton
+        (
+            controls("maxNewtonIterations 4; rejectPredictor yes;")
+        );
         Eigen::VectorXd x(Eigen::VectorXd::Zero(1));
         const newtonSolver::result res = newton.solve(sys, x, xStart);
         Info<< "    residuals at the Jacobians: " << sys.jacobianResiduals
@@ -309,10 +312,8 @@ int main()
         checkAbs("root", x(0), xStar, 1e-12);
 
         testSystem sys2(testSystem::PENALTY);
-        newtonSolver keep
-        (
-            controls("maxNewtonIterations 4; rejectPredictor no;")
-        );
+        // the default: off
+        newtonSolver keep(controls("maxNewtonIterations 4;"));
         x.setZero();
         const newtonSolver::result res2 = keep.solve(sys2, x, xStart);
         checkTrue("without: not rejected", !res2.predictorRejected);

@@ -74,7 +74,7 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
     maxNewton_(dict.lookupOrDefault<label>("maxNewtonIterations", 25)),
     verbose_(dict.lookupOrDefault<bool>("verbose", false)),
     fullStepFallback_(dict.lookupOrDefault<bool>("fullStepFallback", false)),
-    rejectPredictor_(dict.lookupOrDefault<bool>("rejectPredictor", true)),
+    rejectPredictor_(dict.lookupOrDefault<bool>("rejectPredictor", false)),
     initialForcing_(dict.lookupOrDefault<scalar>("initialForcingTerm", 1e-2)),
     estimateError_(readDisplacementTest(dict)),
     holdLinearisation_
