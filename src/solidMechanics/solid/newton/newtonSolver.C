@@ -75,7 +75,7 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
     verbose_(dict.lookupOrDefault<bool>("verbose", false)),
     fullStepFallback_(dict.lookupOrDefault<bool>("fullStepFallback", false)),
     rejectPredictor_(dict.lookupOrDefault<bool>("rejectPredictor", false)),
-    initialForcing_(dict.lookupOrDefault<scalar>("initialForcingTerm", 1e-2)),
+    initialForcing_(dict.lookupOrDefault<scalar>("initialForcingTerm", 1e-4)),
     estimateError_(readDisplacementTest(dict)),
     holdLinearisation_
     (
