@@ -26,7 +26,7 @@ static bool readDisplacementTest(const dictionary& dict)
 {
     const word name
     (
-        dict.lookupOrDefault<word>("displacementTest", "estimate")
+        dict.lookupOrDefault<word>("displacementTest", "correction")
     );
     if (name != "estimate" && name != "correction")
     {
