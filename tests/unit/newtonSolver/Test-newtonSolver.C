@@ -12,7 +12,17 @@ Description
         line search brings it to 0;
       - a singular Jacobian: the solve fails with the system's reason;
       - a residual with a noise floor of 1e-6: converges only with
-        acceptableForceTolerance, and says so.
+        acceptableForceTolerance, and says so;
+      - a 1-D penalty contact R = 1 - x - K max(x - g, 0) from a predictor
+        just short of contact (no fraction of the first step lowers |R|):
+        with rejectPredictor the solve restarts from xStart (the second
+        Jacobian is taken there) and converges; without, it does not
+        (the default; the second Jacobian is taken elsewhere) [S16b];
+      - initialForcingTerm sets the first linear solve's relative
+        tolerance (default 1e-4);
+      - the displacement test by the error estimate stops earlier than by
+        the last correction, and the returned iterate's true error is
+        within the tolerance [S16b].
 
 \*---------------------------------------------------------------------------*/
 
@@ -33,13 +43,19 @@ class testSystem
 {
 public:
 
-    enum kindType { SPRINGS, ATAN, SINGULAR, NOISY };
+    enum kindType { SPRINGS, ATAN, SINGULAR, NOISY, PENALTY };
+
+    //- PENALTY: spring 1, obstacle at g with stiffness Kp
+    static constexpr scalar g = 1e-3;
+    static constexpr scalar Kp = 1e4;
 
     kindType kind;
     Eigen::MatrixXd K;
     Eigen::VectorXd b;
     Eigen::MatrixXd M;
     List<scalar> jacobianResiduals;
+    //- The relative tolerance asked of every linear solve
+    List<scalar> relTols;
 
     explicit testSystem(const kindType k)
     :
@@ -77,6 +93,10 @@ public:
                 R.resize(1);
                 R(0) = -(x(0) - 1) + 1e-6*std::sin(1e9*x(0));
                 break;
+            case PENALTY:
+                R.resize(1);
+                R(0) = 1 - x(0) - Kp*max(x(0) - g, 0);
+                break;
         }
     }
 
@@ -104,6 +124,9 @@ public:
             case NOISY:
                 M.setConstant(1, 1, 1);
                 return true;
+            case PENALTY:
+                M.setConstant(1, 1, 1 + (x(0) > g ? Kp : 0));
+                return true;
         }
         return false;
     }
@@ -120,6 +143,7 @@ public:
         const scalar relTol
     )
     {
+        relTols.append(relTol);
         dx = M.lu().solve(r);
         linearSolver::performance p;
         p.converged = true;
@@ -254,6 +278,111 @@ int main()
         checkTrue("accepted below 1e-5", b.converged && b.accepted);
         checkBelow("accepted residual", b.forceResidual, 1e-5);
         checkAbs("near the root", x(0), 1, 1e-5);
+    }
+
+    Info<< "Penalty contact from a predictor short of contact" << endl;
+    {
+        // xStart in contact (the last converged state), the predictor
+        // x0 = 0 just outside: its Jacobian lacks the obstacle, the full
+        // step penetrates deep and |R| grows linearly along it
+        const Eigen::VectorXd xStart(Eigen::VectorXd::Constant(1, 5e-3));
+        Eigen::VectorXd RStart;
+        testSystem probe(testSystem::PENALTY);
+        probe.residual(xStart, RStart);
+        const scalar xStar = (1 + testSystem::Kp*testSystem::g)
+           /(1 + testSystem::Kp);
+
+        testSystem sys(testSystem::PENALTY);
+        newtonSolver newton
+        (
+            controls("maxNewtonIterations 4; rejectPredictor yes;")
+        );
+        Eigen::VectorXd x(Eigen::VectorXd::Zero(1));
+        const newtonSolver::result res = newton.solve(sys, x, xStart);
+        Info<< "    residuals at the Jacobians: " << sys.jacobianResiduals
+            << endl;
+        checkTrue("predictor rejected", res.predictorRejected);
+        checkTrue
+        (
+            "second Jacobian at xStart",
+            sys.jacobianResiduals.size() >= 2
+         && sys.jacobianResiduals[1] == RStart.norm()
+        );
+        checkTrue("converged", res.converged);
+        checkAbs("root", x(0), xStar, 1e-12);
+
+        testSystem sys2(testSystem::PENALTY);
+        // the default: off
+        newtonSolver keep(controls("maxNewtonIterations 4;"));
+        x.setZero();
+        const newtonSolver::result res2 = keep.solve(sys2, x, xStart);
+        checkTrue("without: not rejected", !res2.predictorRejected);
+        checkTrue
+        (
+            "without: second Jacobian elsewhere",
+            sys2.jacobianResiduals.size() >= 2
+         && sys2.jacobianResiduals[1] != RStart.norm()
+        );
+    }
+
+    Info<< "initialForcingTerm" << endl;
+    {
+        testSystem a(testSystem::SPRINGS), b(testSystem::SPRINGS);
+        newtonSolver byDefault(controls(""));
+        newtonSolver tight(controls("initialForcingTerm 1e-2;"));
+        Eigen::VectorXd x(Eigen::VectorXd::Zero(3)), x0(x);
+        byDefault.solve(a, x, x0);
+        x.setZero();
+        tight.solve(b, x, x0);
+        checkAbs("default first tolerance", a.relTols[0], 1e-4, 1e-15);
+        checkAbs("set first tolerance", b.relTols[0], 1e-2, 1e-15);
+    }
+
+    Info<< "Displacement test: error estimate against last correction"
+        << endl;
+    {
+        // the solution to round-off first
+        testSystem ref(testSystem::SPRINGS);
+        newtonSolver tight
+        (
+            controls("forceTolerance 1e-14; displacementTolerance 1e-14;")
+        );
+        Eigen::VectorXd xStar(Eigen::VectorXd::Zero(3)), x0(xStar);
+        tight.solve(ref, xStar, x0);
+
+        // (the corrections are 1.1e-1, 1.7e-2, 3.4e-4, 1.3e-7 of the
+        // increment: 1e-5 lies between the 3rd correction and the
+        // estimate of the error after it, 6.9e-6)
+        const char* common = "forceTolerance 1; displacementTolerance 1e-5;";
+        label iterations[2];
+        for (label k = 0; k < 2; ++k)
+        {
+            testSystem sys(testSystem::SPRINGS);
+            newtonSolver newton
+            (
+                controls
+                (
+                    (
+                        std::string(common) + " displacementTest "
+                      + (k == 0 ? "estimate;" : "correction;")
+                    ).c_str()
+                )
+            );
+            Eigen::VectorXd x(Eigen::VectorXd::Zero(3));
+            const newtonSolver::result res = newton.solve(sys, x, x0);
+            checkTrue("converged", res.converged);
+            iterations[k] = res.newtonIterations;
+            const scalar err = (x - xStar).cwiseAbs().maxCoeff()
+               /(x - x0).cwiseAbs().maxCoeff();
+            Info<< "    " << (k == 0 ? "estimate" : "correction") << ": "
+                << res.newtonIterations << " iterations, true relative"
+                << " error " << err << endl;
+            checkBelow("true error within the tolerance", err, 1e-5);
+        }
+        checkBelow
+        (
+            "estimate: fewer iterations", iterations[0], iterations[1] - 0.5
+        );
     }
 
     return exitCode();

@@ -22,6 +22,23 @@ Foam::newtonSolver::methodNames
 namespace Foam
 {
 
+static bool readDisplacementTest(const dictionary& dict)
+{
+    const word name
+    (
+        dict.lookupOrDefault<word>("displacementTest", "correction")
+    );
+    if (name != "estimate" && name != "correction")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'displacementTest' in dictionary " << dict.name()
+            << " is '" << name << "'; expected estimate or correction" << nl
+            << exit(FatalIOError);
+    }
+    return name == "estimate";
+}
+
+
 static newtonSolver::method readMethod(const dictionary& dict)
 {
     const word name(dict.lookupOrDefault<word>("newtonMethod", "exact"));
@@ -57,6 +74,9 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
     maxNewton_(dict.lookupOrDefault<label>("maxNewtonIterations", 25)),
     verbose_(dict.lookupOrDefault<bool>("verbose", false)),
     fullStepFallback_(dict.lookupOrDefault<bool>("fullStepFallback", false)),
+    rejectPredictor_(dict.lookupOrDefault<bool>("rejectPredictor", false)),
+    initialForcing_(dict.lookupOrDefault<scalar>("initialForcingTerm", 1e-4)),
+    estimateError_(readDisplacementTest(dict)),
     holdLinearisation_
     (
         dict.lookupOrDefault<bool>("holdContactLinearisation", true)
@@ -84,6 +104,13 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
             << " (got " << forceTol_ << "), displacementTolerance > 0 (got "
             << displacementTol_ << ") and maxNewtonIterations >= 1 (got "
             << maxNewton_ << ")" << nl << exit(FatalIOError);
+    }
+    if (!(initialForcing_ > 0) || initialForcing_ >= 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'initialForcingTerm' in dictionary " << dict.name()
+            << " is " << initialForcing_ << "; expected a value in (0, 1)"
+            << nl << exit(FatalIOError);
     }
     if (acceptableForceTol_ < 0 || stallIterations_ < 1 || krylovRefresh_ < 0)
     {
@@ -217,6 +244,17 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
     scalar eta = 1e-2;
     label lastKrylov = -1;
 
+    // [S16b] was the initial guess extrapolated (a predictor)?
+    bool predicted = rejectPredictor_ && gMaxNorm(x - xStart) > 0;
+
+    // The last two corrections' sizes and whether they were full steps,
+    // for the error estimate of the displacement test
+    scalar dxPrev = -1;
+    scalar dxCur = -1;
+    bool fullPrev = false;
+    bool firstSolve = true;
+    bool fullLast = false;
+
     for (label it = 0; it <= maxNewton_; ++it)
     {
         if (!gFinite(R))
@@ -230,7 +268,15 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
 
         const scalar increment =
             max(gMaxNorm(x - xStart), 1e-6*sys.typicalDisplacement());
-        res.displacementResidual = it > 0 ? gMaxNorm(dx)/increment : 0;
+        const scalar dxLast = it > 0 ? gMaxNorm(dx) : 0;
+        res.displacementResidual = dxLast/increment;
+        if (estimateError_ && fullLast && fullPrev && dxLast < dxPrev)
+        {
+            // [S16b] the error of this iterate from the observed
+            // contraction theta: |x - x*| <= theta/(1 - theta) |dx|
+            const scalar theta = dxLast/dxPrev;
+            res.displacementResidual *= min(1, theta/(1 - theta));
+        }
 
         if (verbose_)
         {
@@ -273,7 +319,12 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
         // to reach the force tolerance; after a step that barely lowered
         // |R| (an active set changing) the tightest, since a loose solve
         // with an outdated preconditioner then misleads Newton further
-        if (it > 0)
+        if (firstSolve)
+        {
+            eta = initialForcing_;
+            firstSolve = false;
+        }
+        else
         {
             const scalar ratio = normR/max(normRprev, VSMALL);
             eta = ratio < 0.9 ? min(0.1, max(0.9*sqr(ratio), 1e-4)) : 1e-4;
@@ -328,8 +379,41 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
             {
                 lambdaFlat = lambda;
             }
-            lambda *= 0.5;
+            if (ls < 5)
+            {
+                // (the last fraction tried stays in lambda: it is the one
+                // taken when none decreases |R|)
+                lambda *= 0.5;
+            }
         }
+        if (!decreased && predicted)
+        {
+            // [S16b] the predictor lies across an active-set switch: no
+            // fraction of the step from it helps; restart from the last
+            // converged state (this iteration counts)
+            if (verbose_)
+            {
+                Info<< "        " << lastKrylov << " linear iterations, no"
+                    << " decrease from the predictor: restart from the last"
+                    << " converged state" << endl;
+            }
+            predicted = false;
+            res.predictorRejected = true;
+            x = xStart;
+            evaluate(sys, x, R);
+            normRprev = normR;
+            normR = gFinite(R) ? gNorm(R) : GREAT;
+            xBest = x;
+            normBest = normR;
+            itBest = it + 1;
+            dx.setZero();
+            dxPrev = dxCur = -1;
+            fullPrev = fullLast = false;
+            firstSolve = true;
+            lastKrylov = -1;
+            continue;
+        }
+        predicted = false;
         if (!decreased && normFull < GREAT && fullStepFallback_)
         {
             lambda = 1;
@@ -359,6 +443,10 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
         }
 
         dx *= lambda;
+        dxPrev = dxCur;
+        dxCur = gMaxNorm(dx);
+        fullPrev = fullLast;
+        fullLast = decreased && lambda == 1;
         x = xTrial;
         R = Rtrial;
         normRprev = normR;
