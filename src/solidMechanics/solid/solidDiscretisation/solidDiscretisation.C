@@ -530,6 +530,46 @@ Foam::tmp<Foam::vectorField> Foam::solidDiscretisation::faceDisplacement
 }
 
 
+Foam::label Foam::solidDiscretisation::correctPrediction(vectorField& u)
+{
+    setIterate(u);
+    vectorField du(u.size(), Zero);
+    labelField nFaces(u.size(), 0);
+    label nCorrected = 0;
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (bcs_.kind(patchi) != solidBoundaries::FORCE)
+        {
+            continue;
+        }
+        const forceKinematics fk(*this, patchi, mesh_.time().deltaTValue());
+        vectorField dD(fk.k.D.size(), Zero);
+        if (bcs_.forcePatch(patchi).predictorCorrection(fk.k, dD) == 0)
+        {
+            continue;
+        }
+        const labelUList& fc = mesh_.boundary()[patchi].faceCells();
+        forAll(fc, i)
+        {
+            if (magSqr(dD[i]) > 0)
+            {
+                du[fc[i]] += dD[i];
+                ++nFaces[fc[i]];
+                ++nCorrected;
+            }
+        }
+    }
+    forAll(u, celli)
+    {
+        if (nFaces[celli])
+        {
+            u[celli] += du[celli]/nFaces[celli];
+        }
+    }
+    return returnReduce(nCorrected, sumOp<label>());
+}
+
+
 void Foam::solidDiscretisation::holdLinearisation(const bool on)
 {
     forAll(mesh_.boundary(), patchi)
