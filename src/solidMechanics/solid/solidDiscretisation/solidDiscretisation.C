@@ -559,14 +559,24 @@ Foam::label Foam::solidDiscretisation::correctPrediction(vectorField& u)
             }
         }
     }
+    scalar largest = 0;
     forAll(u, celli)
     {
         if (nFaces[celli])
         {
             u[celli] += du[celli]/nFaces[celli];
+            largest = max(largest, mag(du[celli]/nFaces[celli]));
         }
     }
-    return returnReduce(nCorrected, sumOp<label>());
+    reduce(nCorrected, sumOp<label>());
+    reduce(largest, maxOp<scalar>());
+    if (nCorrected)
+    {
+        Info<< "    predictor: " << nCorrected << " contact faces kept at"
+            << " their converged gap (largest correction " << largest
+            << " m)" << endl;
+    }
+    return nCorrected;
 }
 
 

@@ -248,12 +248,9 @@ void Foam::totalLagrangianSolid::beginStep
         {
             vectorField u(mesh_.nCells());
             unpack(x, u);
-            const label n = discretisation_.correctPrediction(u);
-            if (n)
+            if (discretisation_.correctPrediction(u))
             {
                 pack(u, x);
-                Info<< "    predictor: " << n << " contact faces kept at"
-                    << " their converged gap" << endl;
             }
         }
     }
