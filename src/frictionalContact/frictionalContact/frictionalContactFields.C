@@ -165,6 +165,62 @@ void Foam::frictionalContactFvPatchVectorField::release()
 }
 
 
+Foam::label Foam::frictionalContactFvPatchVectorField::predictorCorrection
+(
+    const solidPatchKinematics& k,
+    vectorField& dD
+) const
+{
+    // [S18b] the extrapolated step repeats the last one's closing of the
+    // gap from outside the smoothed onset [C2b] to within it, and so
+    // predicts the faces out of contact again. A face in contact at the
+    // converged state (gap below the onset width, the obstacle where it was
+    // then) whose predicted gap is larger gets the converged gap back,
+    // along the obstacle's normal at the new time. Copies of the search
+    // records: the cache [C2c] is not touched by the query
+    label nCorrected = 0;
+    forAll(dD, i)
+    {
+        const scalar cellDepth =
+            patch().boundaryMesh().mesh().V()[patch().faceCells()[i]]
+           /mag(k.Sf0[i]);
+        const scalar refresh = searchRefreshFraction_*cellDepth;
+
+        obstacleSearch oldSearch(search_[i]);
+        obstaclePoint cpOld;
+        if
+        (
+           !obstacle_->nearest
+            (
+                k.Cf0[i] + k.Dold[i], k.time - k.deltaT, searchDistance_,
+                refresh, cpOld, oldSearch
+            )
+         || smoothedPenetration(-cpOld.gap) <= 0
+        )
+        {
+            continue;
+        }
+
+        obstacleSearch newSearch(search_[i]);
+        obstaclePoint cp;
+        if
+        (
+            obstacle_->nearest
+            (
+                k.Cf0[i] + k.D[i], k.time, searchDistance_, refresh, cp,
+                newSearch
+            )
+         && cp.gap > cpOld.gap
+        )
+        {
+            dD[i] = (cpOld.gap - cp.gap)*cp.n;
+            ++nCorrected;
+        }
+    }
+    return nCorrected;
+}
+
+
 void Foam::frictionalContactFvPatchVectorField::commit
 (
     const solidPatchKinematics& k

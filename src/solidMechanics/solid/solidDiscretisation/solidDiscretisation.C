@@ -530,6 +530,56 @@ Foam::tmp<Foam::vectorField> Foam::solidDiscretisation::faceDisplacement
 }
 
 
+Foam::label Foam::solidDiscretisation::correctPrediction(vectorField& u)
+{
+    setIterate(u);
+    vectorField du(u.size(), Zero);
+    labelField nFaces(u.size(), 0);
+    label nCorrected = 0;
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (bcs_.kind(patchi) != solidBoundaries::FORCE)
+        {
+            continue;
+        }
+        const forceKinematics fk(*this, patchi, mesh_.time().deltaTValue());
+        vectorField dD(fk.k.D.size(), Zero);
+        if (bcs_.forcePatch(patchi).predictorCorrection(fk.k, dD) == 0)
+        {
+            continue;
+        }
+        const labelUList& fc = mesh_.boundary()[patchi].faceCells();
+        forAll(fc, i)
+        {
+            if (magSqr(dD[i]) > 0)
+            {
+                du[fc[i]] += dD[i];
+                ++nFaces[fc[i]];
+                ++nCorrected;
+            }
+        }
+    }
+    scalar largest = 0;
+    forAll(u, celli)
+    {
+        if (nFaces[celli])
+        {
+            u[celli] += du[celli]/nFaces[celli];
+            largest = max(largest, mag(du[celli]/nFaces[celli]));
+        }
+    }
+    reduce(nCorrected, sumOp<label>());
+    reduce(largest, maxOp<scalar>());
+    if (nCorrected)
+    {
+        Info<< "    predictor: " << nCorrected << " contact faces kept at"
+            << " their converged gap (largest correction " << largest
+            << " m)" << endl;
+    }
+    return nCorrected;
+}
+
+
 void Foam::solidDiscretisation::holdLinearisation(const bool on)
 {
     forAll(mesh_.boundary(), patchi)

@@ -134,6 +134,11 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
         discretisation_.cellNumbering()
     ),
     linearSolver_(),
+    predictorContact_
+    (
+        mesh.solutionDict().subDict("solid")
+       .lookupOrDefault<bool>("predictorContact", true)
+    ),
     bodySize_(mag(mesh.bounds().span())),
     checkStep_(1e-8)
 {
@@ -236,6 +241,18 @@ void Foam::totalLagrangianSolid::beginStep
         Eigen::VectorXd x00;
         pack(discretisation_.D00(), x00);
         x += ratio*(xStart - x00);
+
+        // [S18b] faces in contact at the last converged state kept in
+        // contact by the prediction
+        if (predictorContact_)
+        {
+            vectorField u(mesh_.nCells());
+            unpack(x, u);
+            if (discretisation_.correctPrediction(u))
+            {
+                pack(u, x);
+            }
+        }
     }
 }
 
