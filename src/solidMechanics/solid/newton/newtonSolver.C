@@ -359,7 +359,8 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
         scalar normTrial = GREAT;
         bool decreased = false;
         scalar lambdaFlat = -1;
-        for (label ls = 0; ls < 6; ++ls)
+        const label nTrials = 6;    // fractions 1, 1/2, ..., 1/32
+        for (label ls = 0; ls < nTrials; ++ls)
         {
             xTrial = x + lambda*dx;
             evaluate(sys, xTrial, Rtrial);
@@ -379,7 +380,7 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
             {
                 lambdaFlat = lambda;
             }
-            if (ls < 5)
+            if (ls < nTrials - 1)
             {
                 // (the last fraction tried stays in lambda: it is the one
                 // taken when none decreases |R|)
