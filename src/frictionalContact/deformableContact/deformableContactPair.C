@@ -13,11 +13,7 @@ Description
 
 #include "deformableContactFvPatchVectorField.H"
 #include "volFields.H"
-#include "indexedOctree.H"
-#include "treeDataPrimitivePatch.H"
-#include "primitiveFacePatch.H"
 #include <ctime>
-#include <algorithm>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -58,146 +54,11 @@ void Foam::deformableContactFvPatchVectorField::candidates
     labelListList& cand
 ) const
 {
-    // Candidates by a sweep along the direction in which the master
-    // surface extends most: the master faces sorted by the lower end of
-    // their interval (widened by the search distance); a slave face's
-    // candidates start within one interval length before its own
-    // [C11]: O(n log n)
     const pairTimer timer(cost_.search);
-    const label nM = ms.X.size();
-    cand.setSize(sl.X.size());
-    if (nM == 0)
-    {
-        cand = labelList();
-        return;
-    }
-    if (sl.Xv.size())
-    {
-        candidates3D(sl, ms, margin, cand);
-        return;
-    }
-    boundBox bb(ms.a, false);
-    bb.add(ms.b);
-    const vector span(bb.span());
-    const direction ax =
-        span.x() >= span.y() && span.x() >= span.z() ? 0
-      : (span.y() >= span.z() ? 1 : 2);
-    scalar longest = 0;
-    forAll(ms.a, m)
-    {
-        longest = max(longest, mag(ms.b[m] - ms.a[m]));
-    }
-    const scalar widen = searchDistance_ + margin*longest;
-    scalarField lo(nM);
-    scalarField hi(nM);
-    scalar maxLength = 0;
-    forAll(lo, m)
-    {
-        lo[m] = min(ms.a[m][ax], ms.b[m][ax]) - widen;
-        hi[m] = max(ms.a[m][ax], ms.b[m][ax]) + widen;
-        maxLength = max(maxLength, hi[m] - lo[m]);
-    }
-    labelList order(identity(nM));
-    std::sort
+    overlapContactSurface::findCandidates
     (
-        order.begin(), order.end(),
-        [&](const label i, const label j) { return lo[i] < lo[j]; }
+        sl, ms, searchDistance_, margin, cand
     );
-    scalarList sortedLo(nM);
-    forAll(order, k)
-    {
-        sortedLo[k] = lo[order[k]];
-    }
-
-    DynamicList<label> found(8);
-    forAll(cand, i)
-    {
-        const scalar sLo = min(sl.a[i][ax], sl.b[i][ax]);
-        const scalar sHi = max(sl.a[i][ax], sl.b[i][ax]);
-        found.clear();
-        label k = label
-        (
-            std::lower_bound
-            (
-                sortedLo.begin(), sortedLo.end(), sLo - maxLength
-            ) - sortedLo.begin()
-        );
-        for (; k < nM && sortedLo[k] <= sHi; ++k)
-        {
-            const label m = order[k];
-            // facing surfaces only
-            if (hi[m] >= sLo && (sl.n[i] & ms.n[m]) < 0)
-            {
-                found.append(m);
-            }
-        }
-        cand[i] = found;
-    }
-}
-
-
-void Foam::deformableContactFvPatchVectorField::candidates3D
-(
-    const side& sl,
-    const side& ms,
-    const scalar margin,
-    labelListList& cand
-) const
-{
-    // [C11b] an octree of the master faces' deformed polygons; a slave
-    // face's candidates are the master faces that meet its bounding box
-    // widened by the search distance (and 'margin' times its diameter):
-    // O(n log n) (called by candidates(), which sized cand)
-    label nPoints = 0;
-    forAll(ms.v, m)
-    {
-        nPoints += ms.v[m].size();
-    }
-    faceList faces(ms.v.size());
-    pointField points(nPoints);
-    nPoints = 0;
-    forAll(ms.v, m)
-    {
-        face& f = faces[m];
-        f.setSize(ms.v[m].size());
-        forAll(f, k)
-        {
-            f[k] = nPoints;
-            points[nPoints++] = ms.v[m][k];
-        }
-    }
-    const primitiveFacePatch surface(faces, points);
-    treeBoundBox overall(points);
-    overall.inflate(1e-4);
-    typedef treeDataPrimitivePatch<primitiveFacePatch> treeType;
-    const indexedOctree<treeType> tree
-    (
-        treeType(true, surface, 1e-6),
-        overall,
-        8,
-        10,
-        3.0
-    );
-
-    DynamicList<label> found(8);
-    forAll(cand, i)
-    {
-        treeBoundBox bb(sl.v[i]);
-        const scalar widen = searchDistance_ + margin*mag(bb.span());
-        bb.min() -= vector::uniform(widen);
-        bb.max() += vector::uniform(widen);
-        found.clear();
-        for (const label m : tree.findBox(bb))
-        {
-            // facing surfaces only
-            if ((sl.n[i] & ms.n[m]) < 0)
-            {
-                found.append(m);
-            }
-        }
-        Foam::sort(found);
-        cand[i] = found;
-    }
 }
 
 

@@ -5,7 +5,9 @@ License
 Description
     The deformable master surface of the slave-face loop
     (overlapContactSurface, doc/theory.md [C10]-[C12]) on hand-made sides,
-    against the overlap lengths and areas worked out by hand:
+    against the overlap lengths and areas worked out by hand, with the
+    candidates of its search (findCandidates: the 2-D sweep, the 3-D
+    octree):
       - 2-D: a slave segment of length 1.5 over two master segments, of
         which it covers 0.5 and 1: weights 1/3 and 2/3, the gap, the
         normal, the master's motion as the weighted mean of the two master
@@ -109,7 +111,16 @@ int main()
             vector(0, -1, 0),
             {Zero, Zero, Zero}
         );
-        const labelListList cand({labelList({0, 1}), labelList({1}), labelList({0})});
+        // the candidates by the sweep [C11]: the masters each face's
+        // interval meets
+        labelListList cand;
+        overlapContactSurface::findCandidates(sl, ms, searchDistance, 0, cand);
+        unitTest::checkTrue
+        (
+            "sweep candidates {0 1} {1} {0}",
+            cand.size() == 3 && cand[0] == labelList({0, 1})
+         && cand[1] == labelList({1}) && cand[2] == labelList({0})
+        );
         const overlapContactSurface master(sl, ms, cand, searchDistance);
 
         masterPoint mp;
@@ -147,7 +158,14 @@ int main()
             {square(0, 1, 0), square(1, 2, 0)}, vector(0, 0, 1)
         );
         const contactSide sl = polygons({square(0.5, 1.5, g)}, vector(0, 0, -1));
-        const labelListList cand({labelList({0, 1})});
+        // the candidates by the octree of the master polygons [C11b]
+        labelListList cand;
+        overlapContactSurface::findCandidates(sl, ms, searchDistance, 0, cand);
+        unitTest::checkTrue
+        (
+            "octree candidates {0 1}",
+            cand.size() == 1 && cand[0] == labelList({0, 1})
+        );
         const overlapContactSurface master(sl, ms, cand, searchDistance);
 
         masterPoint mp;
