@@ -127,15 +127,11 @@ void Foam::contactFaces::readContactFaces(const dictionary& dict)
 
     // [C2b] width of the smoothed onset of contact: 1e-3 of a cell depth
     const fvPatch& p = contactPatch();
-    const scalarField& V = p.boundaryMesh().mesh().V();
-    scalar hMax = 0;
-    forAll(p.faceCells(), i)
-    {
-        hMax = max(hMax, V[p.faceCells()[i]]/p.magSf()[i]);
-    }
-    reduce(hMax, maxOp<scalar>());
     contactSmoothing_ =
-        dict.lookupOrDefault<scalar>("contactSmoothing", 1e-3*hMax);
+        dict.lookupOrDefault<scalar>
+        (
+            "contactSmoothing", 1e-3*contactSurface::maxCellDepth(p)
+        );
     if (contactSmoothing_ < 0)
     {
         FatalIOErrorInFunction(dict)
@@ -311,17 +307,28 @@ void Foam::contactFaces::faceUpdate
     if (linearised_)
     {
         // [S15b] the held face's tangent, not the law
-        const frictionInput& in0 = heldInput_[i];
-        res = heldResult_[i];
-        const scalar dgN = in.gN - in0.gN;
-        const vector dgT(in.gT - in0.gT);
-        res.tN += res.dtNdgN*dgN;
-        res.tT += (res.dtTdgT & dgT) + res.dtTdgN*dgN;
+        linearAbout(heldInput_[i], heldResult_[i], in, res);
     }
     else
     {
         law().update(state_[i], in, res);
     }
+}
+
+
+void Foam::contactFaces::linearAbout
+(
+    const frictionInput& in0,
+    const frictionResult& res0,
+    const frictionInput& in,
+    frictionResult& res
+)
+{
+    res = res0;
+    const scalar dgN = in.gN - in0.gN;
+    const vector dgT(in.gT - in0.gT);
+    res.tN += res.dtNdgN*dgN;
+    res.tT += (res.dtTdgT & dgT) + res.dtTdgN*dgN;
 }
 
 

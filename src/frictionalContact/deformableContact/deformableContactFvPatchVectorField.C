@@ -329,7 +329,7 @@ void Foam::deformableContactFvPatchVectorField::pairForces
         {
             continue;
         }
-        fSlave[i] = sf.area*(sf.result.tN*sf.n - sf.result.tT);
+        fSlave[i] = slaveForce(sf);
         forAll(sf.masters, j)
         {
             fMaster[sf.masters[j]] -= sf.weights[j]*fSlave[i];
@@ -410,24 +410,9 @@ Foam::deformableContactFvPatchVectorField::deformableContactFvPatchVectorField
                 << ")" << nl << exit(FatalIOError);
         }
     }
-    // Default search distance: two cell depths (the same on every
-    // processor, whether it holds faces of the patch or not [C14])
-    const scalarField& V = mesh.V();
-    scalar hMax = 0;
-    forAll(p.faceCells(), i)
-    {
-        hMax = max(hMax, V[p.faceCells()[i]]/p.magSf()[i]);
-    }
-    reduce(hMax, maxOp<scalar>());
-    searchDistance_ =
-        dict.lookupOrDefault<scalar>("searchDistance", 2*max(hMax, SMALL));
-    if (!(searchDistance_ > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword 'searchDistance' in dictionary " << dict.name()
-            << " must be > 0, got " << searchDistance_ << nl
-            << exit(FatalIOError);
-    }
+    // [C14] the same on every processor, whether it holds faces of the
+    // patch or not
+    searchDistance_ = contactSurface::readSearchDistance(dict, p);
 
     setSegments();
     if (slave_)

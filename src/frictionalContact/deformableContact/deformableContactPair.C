@@ -4,19 +4,16 @@ License
 
 Description
     deformableContact: the slave faces against the master surface
-    ([C10]-[C13] in doc/theory.md), the forces of both sides, their
-    diagonal tangent, the held linearisation and the commit.
+    ([C10]-[C13] in doc/theory.md): the candidates, the slave-face loop of
+    contactFaces against the overlaps (overlapContactSurface), the forces
+    of both sides, their derivatives, the held linearisation and the
+    commit.
 
 \*---------------------------------------------------------------------------*/
 
 #include "deformableContactFvPatchVectorField.H"
 #include "volFields.H"
-#include "polygonOverlap.H"
-#include "indexedOctree.H"
-#include "treeDataPrimitivePatch.H"
-#include "primitiveFacePatch.H"
 #include <ctime>
-#include <algorithm>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -44,15 +41,6 @@ public:
     }
 };
 
-//- One overlap of a slave face with a master face [C11], [C11b]
-struct faceOverlap
-{
-    label master;
-    scalar length;      // overlap length (3-D: area) l_sm, master measure
-    scalar projected;   // measure of the slave face's projection
-    scalar gap;         // (x_s - x_m) . n_m at the overlap's centroid
-};
-
 } // End namespace Foam
 
 
@@ -66,286 +54,11 @@ void Foam::deformableContactFvPatchVectorField::candidates
     labelListList& cand
 ) const
 {
-    // Candidates by a sweep along the direction in which the master
-    // surface extends most: the master faces sorted by the lower end of
-    // their interval (widened by the search distance); a slave face's
-    // candidates start within one interval length before its own
-    // [C11]: O(n log n)
     const pairTimer timer(cost_.search);
-    const label nM = ms.X.size();
-    cand.setSize(sl.X.size());
-    if (nM == 0)
-    {
-        cand = labelList();
-        return;
-    }
-    if (sl.Xv.size())
-    {
-        candidates3D(sl, ms, margin, cand);
-        return;
-    }
-    boundBox bb(ms.a, false);
-    bb.add(ms.b);
-    const vector span(bb.span());
-    const direction ax =
-        span.x() >= span.y() && span.x() >= span.z() ? 0
-      : (span.y() >= span.z() ? 1 : 2);
-    scalar longest = 0;
-    forAll(ms.a, m)
-    {
-        longest = max(longest, mag(ms.b[m] - ms.a[m]));
-    }
-    const scalar widen = searchDistance_ + margin*longest;
-    scalarField lo(nM);
-    scalarField hi(nM);
-    scalar maxLength = 0;
-    forAll(lo, m)
-    {
-        lo[m] = min(ms.a[m][ax], ms.b[m][ax]) - widen;
-        hi[m] = max(ms.a[m][ax], ms.b[m][ax]) + widen;
-        maxLength = max(maxLength, hi[m] - lo[m]);
-    }
-    labelList order(identity(nM));
-    std::sort
+    overlapContactSurface::findCandidates
     (
-        order.begin(), order.end(),
-        [&](const label i, const label j) { return lo[i] < lo[j]; }
+        sl, ms, searchDistance_, margin, cand
     );
-    scalarList sortedLo(nM);
-    forAll(order, k)
-    {
-        sortedLo[k] = lo[order[k]];
-    }
-
-    DynamicList<label> found(8);
-    forAll(cand, i)
-    {
-        const scalar sLo = min(sl.a[i][ax], sl.b[i][ax]);
-        const scalar sHi = max(sl.a[i][ax], sl.b[i][ax]);
-        found.clear();
-        label k = label
-        (
-            std::lower_bound
-            (
-                sortedLo.begin(), sortedLo.end(), sLo - maxLength
-            ) - sortedLo.begin()
-        );
-        for (; k < nM && sortedLo[k] <= sHi; ++k)
-        {
-            const label m = order[k];
-            // facing surfaces only
-            if (hi[m] >= sLo && (sl.n[i] & ms.n[m]) < 0)
-            {
-                found.append(m);
-            }
-        }
-        cand[i] = found;
-    }
-}
-
-
-void Foam::deformableContactFvPatchVectorField::candidates3D
-(
-    const side& sl,
-    const side& ms,
-    const scalar margin,
-    labelListList& cand
-) const
-{
-    // [C11b] an octree of the master faces' deformed polygons; a slave
-    // face's candidates are the master faces that meet its bounding box
-    // widened by the search distance (and 'margin' times its diameter):
-    // O(n log n) (called by candidates(), which sized cand)
-    label nPoints = 0;
-    forAll(ms.v, m)
-    {
-        nPoints += ms.v[m].size();
-    }
-    faceList faces(ms.v.size());
-    pointField points(nPoints);
-    nPoints = 0;
-    forAll(ms.v, m)
-    {
-        face& f = faces[m];
-        f.setSize(ms.v[m].size());
-        forAll(f, k)
-        {
-            f[k] = nPoints;
-            points[nPoints++] = ms.v[m][k];
-        }
-    }
-    const primitiveFacePatch surface(faces, points);
-    treeBoundBox overall(points);
-    overall.inflate(1e-4);
-    typedef treeDataPrimitivePatch<primitiveFacePatch> treeType;
-    const indexedOctree<treeType> tree
-    (
-        treeType(true, surface, 1e-6),
-        overall,
-        8,
-        10,
-        3.0
-    );
-
-    DynamicList<label> found(8);
-    forAll(cand, i)
-    {
-        treeBoundBox bb(sl.v[i]);
-        const scalar widen = searchDistance_ + margin*mag(bb.span());
-        bb.min() -= vector::uniform(widen);
-        bb.max() += vector::uniform(widen);
-        found.clear();
-        for (const label m : tree.findBox(bb))
-        {
-            // facing surfaces only
-            if ((sl.n[i] & ms.n[m]) < 0)
-            {
-                found.append(m);
-            }
-        }
-        Foam::sort(found);
-        cand[i] = found;
-    }
-}
-
-
-void Foam::deformableContactFvPatchVectorField::evaluateFace
-(
-    const label i,
-    const side& sl,
-    const side& ms,
-    const labelList& cand,
-    const scalar deltaT,
-    slaveFace& sf,
-    const slaveFace* held
-) const
-{
-    sf = slaveFace();
-    if (heldOutOfReach(i))
-    {
-        return;
-    }
-    const point& as = sl.a[i];
-    const point& bs = sl.b[i];
-
-    DynamicList<faceOverlap> overlaps(8);
-    if (sl.Xv.size())
-    {
-        // [C11b] polygons
-        const point xs(sl.X[i] + sl.D[i]);
-        for (const label m : cand)
-        {
-            scalar area;
-            scalar projected;
-            scalar g;
-            if
-            (
-                polygonOverlap::overlap
-                (
-                    sl.v[i], xs, sl.n[i],
-                    ms.v[m], ms.X[m] + ms.D[m], ms.n[m],
-                    area, projected, g
-                )
-             && mag(g) <= searchDistance_
-            )
-            {
-                overlaps.append({m, area, projected, g});
-            }
-        }
-    }
-    else
-    {
-        // [C11] segments
-        for (const label m : cand)
-        {
-            const vector& nm = ms.n[m];
-            if ((sl.n[i] & nm) >= 0)
-            {
-                continue;
-            }
-            const vector e(ms.b[m] - ms.a[m]);
-            const scalar Lm = mag(e);
-            if (Lm < VSMALL)
-            {
-                continue;
-            }
-            const vector tau(e/Lm);
-            const scalar xa = (as - ms.a[m]) & tau;
-            const scalar xb = (bs - ms.a[m]) & tau;
-            const scalar l0 = max(min(xa, xb), scalar(0));
-            const scalar l1 = min(max(xa, xb), Lm);
-            if (l1 <= l0)
-            {
-                continue;
-            }
-            // the gap is linear over the overlap: its midpoint value is its
-            // mean
-            const scalar xc = 0.5*(l0 + l1);
-            const scalar lambda =
-                mag(xb - xa) > VSMALL ? (xc - xa)/(xb - xa) : 0.5;
-            const point xs(as + lambda*(bs - as));
-            const point xm(ms.a[m] + xc*tau);
-            const scalar g = (xs - xm) & nm;
-            if (mag(g) > searchDistance_)
-            {
-                continue;
-            }
-            overlaps.append({m, l1 - l0, mag(xb - xa), g});
-        }
-    }
-
-    scalar total = 0;
-    for (const faceOverlap& o : overlaps)
-    {
-        total += o.length;
-    }
-    if (total <= 0)
-    {
-        return;
-    }
-
-    // [C10] weighted gap, normal, coverage; [C12] slip
-    sf.inReach = true;
-    sf.masters.setSize(overlaps.size());
-    sf.weights.setSize(overlaps.size());
-    sf.gap = 0;
-    vector n(Zero);
-    scalar projected = 0;
-    vector dsMaster(Zero);
-    forAll(overlaps, j)
-    {
-        const faceOverlap& o = overlaps[j];
-        const scalar w = o.length/total;
-        sf.masters[j] = o.master;
-        sf.weights[j] = w;
-        sf.gap += w*o.gap;
-        n += w*ms.n[o.master];
-        projected += w*o.projected;
-        dsMaster += w*(ms.D[o.master] - ms.Dold[o.master]);
-    }
-    sf.n = n/max(mag(n), VSMALL);
-    sf.area = min(total/max(projected, VSMALL), scalar(1))*sl.area[i];
-
-    const vector ds((sl.D[i] - sl.Dold[i]) - dsMaster);
-    frictionInput& in = sf.input;
-    in.gN = smoothedPenetration(-sf.gap);
-    in.gT = (tensor::I - sqr(sf.n)) & (state()[i].totalSlip + ds);
-    in.n = sf.n;
-    in.dt = deltaT;
-    if (held)
-    {
-        // the law's consistent tangent at the held result [F7]
-        const frictionInput& in0 = held->input;
-        sf.result = held->result;
-        const scalar dgN = in.gN - in0.gN;
-        const vector dgT(in.gT - in0.gT);
-        sf.result.tN += sf.result.dtNdgN*dgN;
-        sf.result.tT += (sf.result.dtTdgT & dgT) + sf.result.dtTdgN*dgN;
-    }
-    else
-    {
-        faceUpdate(i, in, sf.result);
-    }
 }
 
 
@@ -359,11 +72,11 @@ void Foam::deformableContactFvPatchVectorField::evaluatePair
 {
     labelListList cand;
     candidates(sl, ms, 0, cand);
-    faces.setSize(sl.X.size());
-    forAll(faces, i)
-    {
-        evaluateFace(i, sl, ms, cand[i], deltaT, faces[i]);
-    }
+    evaluateSlaveFaces
+    (
+        overlapContactSurface(sl, ms, cand, searchDistance_),
+        sl.D - sl.Dold, sl.area, deltaT, faces
+    );
 }
 
 
@@ -426,6 +139,8 @@ void Foam::deformableContactFvPatchVectorField::pairTangent
 
     labelListList cand;
     candidates(sl, ms, 0, cand);
+    // a view of sl and ms: sees the perturbations below
+    const overlapContactSurface master(sl, ms, cand, searchDistance_);
 
     slaveOwn.setSize(sl.X.size());
     slaveOwn = faceForceTangent();
@@ -444,7 +159,7 @@ void Foam::deformableContactFvPatchVectorField::pairTangent
         {
             return;
         }
-        const vector f(sf.area*(sf.result.tN*sf.n - sf.result.tT));
+        const vector f(slaveForce(sf));
         out[0] = f;
         forAll(masters, j)
         {
@@ -462,7 +177,10 @@ void Foam::deformableContactFvPatchVectorField::pairTangent
     forAll(sl.X, i)
     {
         slaveFace base;
-        evaluateFace(i, sl, ms, cand[i], deltaT, base);
+        evaluateSlaveFace
+        (
+            i, master, sl.D[i] - sl.Dold[i], sl.area[i], deltaT, base
+        );
         if (!base.inReach)
         {
             continue;
@@ -499,7 +217,11 @@ void Foam::deformableContactFvPatchVectorField::pairTangent
                     }
                     faceGeometry(s, fi);
                     slaveFace sf;
-                    evaluateFace(i, sl, ms, cand[i], deltaT, sf, &base);
+                    evaluateSlaveFace
+                    (
+                        i, master, sl.D[i] - sl.Dold[i], sl.area[i], deltaT,
+                        sf, &base
+                    );
                     outputs(sf, masters, sign > 0 ? outP : outM);
                 }
                 s.D[fi] = D0;
@@ -731,16 +453,11 @@ void Foam::deformableContactFvPatchVectorField::linearise
         return;
     }
     checkPair();
-    beginHold();
     side sl;
     side ms;
     List<slaveFace> faces;
     evaluate(sl, ms, faces, k.deltaT);
-    forAll(faces, i)
-    {
-        holdFace(i, faces[i].inReach, faces[i].input, faces[i].result);
-    }
-    startHold();
+    holdSlaveFaces(faces);
 }
 
 
@@ -772,24 +489,7 @@ void Foam::deformableContactFvPatchVectorField::commit
         reduceMasterForces(committedMasterForce_, partner().patch().size());
         committedTimeIndex_ = timeIndex;
 
-        beginCommit();
-        forAll(faces, i)
-        {
-            const slaveFace& sf = faces[i];
-            if (sf.inReach)
-            {
-                commitFace
-                (
-                    i, sf.result, sf.n, sf.area, sf.gap, mag(sl.S0[i]),
-                    sl.X[i] + sl.D[i]
-                );
-            }
-            else
-            {
-                commitOpenFace(i);
-            }
-        }
-        endCommit();
+        commitSlaveFaces(faces, sl.S0, sl.X + sl.D);
         return;
     }
 

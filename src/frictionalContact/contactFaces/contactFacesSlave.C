@@ -1,0 +1,187 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+
+Description
+    contactFaces: the slave-face loop against a master surface
+    (doc/theory.md [C1]-[C6], [C10], [C12]), shared by frictionalContact
+    (a rigid obstacle) and deformableContact (the partner body's patch):
+    master point -> the law's input -> law -> force, its exact tangent
+    against a master without unknowns, the hold and the commit of the
+    evaluated faces.
+
+\*---------------------------------------------------------------------------*/
+
+#include "contactFaces.H"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::contactFaces::evaluateSlaveFace
+(
+    const label i,
+    const contactSurface& master,
+    const vector& dOwn,
+    const scalar area,
+    const scalar dt,
+    slaveFace& sf,
+    const slaveFace* held
+) const
+{
+    sf = slaveFace();
+    if (heldOutOfReach(i) || !master.masterPointOf(i, sf))
+    {
+        return;
+    }
+
+    // [C10] the force acts on the covered part of the face
+    sf.area = sf.coverage*area;
+
+    // [C3], [C12] slip relative to the master in the current tangent plane
+    // (objective rate, [F29]): the face's motion over the step less that of
+    // the master's material point(s) under it; [C2b] smoothed penetration
+    const vector ds(dOwn - sf.motion);
+    frictionInput& in = sf.input;
+    in.gN = smoothedPenetration(-sf.gap);
+    in.gT = (tensor::I - sqr(sf.n)) & (state()[i].totalSlip + ds);
+    in.n = sf.n;
+    in.dt = dt;
+    if (held)
+    {
+        // the law's consistent tangent at the held result [F7]
+        linearAbout(held->input, held->result, in, sf.result);
+    }
+    else
+    {
+        faceUpdate(i, in, sf.result);
+    }
+}
+
+
+void Foam::contactFaces::evaluateSlaveFaces
+(
+    const contactSurface& master,
+    const vectorField& dOwn,
+    const scalarField& area,
+    const scalar dt,
+    List<slaveFace>& faces
+) const
+{
+    faces.setSize(dOwn.size());
+    forAll(faces, i)
+    {
+        evaluateSlaveFace(i, master, dOwn[i], area[i], dt, faces[i]);
+    }
+}
+
+
+void Foam::contactFaces::slaveFaceTangent
+(
+    const label i,
+    const masterPoint& mp,
+    const vector& dOwn,
+    const tensor& F,
+    const vector& S0,
+    const scalar dt,
+    faceForceTangent& df
+) const
+{
+    // [C6] the exact derivative of f = da (tN n - tT) with respect to the
+    // face displacement and deformation gradient, the face state held
+    const frictionState& old = state()[i];
+    const vector& n = mp.n;
+    const tensor& N = mp.dndx;
+    const tensor P(tensor::I - sqr(n));
+    const vector v(old.totalSlip + dOwn - mp.motion);
+
+    frictionInput in;
+    in.gN = smoothedPenetration(-mp.gap);
+    in.gT = P & v;
+    in.n = n;
+    in.dt = dt;
+    frictionResult res;
+    law().update(old, in, res);
+
+    // gN = smoothed(-gap) [C2b]; gT = (I - n n).v [C3]
+    const vector dgNdx(-smoothedPenetrationSlope(-mp.gap)*mp.dgapdx);
+    const tensor dvdx(tensor::I - mp.dmotiondx);
+    const tensor dgTdx((P & dvdx) - (n & v)*N - n*(N.T() & v));
+
+    // the law's tangent [F7]; on a curved master also the turn of the
+    // tangent plane inside the law, by central differences in n
+    tensor dtTdx((res.dtTdgT & dgTdx) + res.dtTdgN*dgNdx);
+    if (magSqr(N) > 0)
+    {
+        const scalar h = 1e-6;
+        vector t1(P & vector(1, 0, 0));
+        if (magSqr(t1) < 0.1)
+        {
+            t1 = P & vector(0, 1, 0);
+        }
+        t1 /= mag(t1);
+        const vector t2(n ^ t1);
+        for (const vector& tj : {t1, t2})
+        {
+            frictionInput inp(in);
+            frictionInput inm(in);
+            inp.n = (n + h*tj)/mag(n + h*tj);
+            inm.n = (n - h*tj)/mag(n - h*tj);
+            frictionResult rp;
+            frictionResult rm;
+            law().update(old, inp, rp);
+            law().update(old, inm, rm);
+            dtTdx += ((rp.tT - rm.tT)/(2*h))*(N.T() & tj);
+        }
+    }
+
+    // [C4] area da = |a|, a = J F^-T . S0
+    const tensor FinvT(inv(F).T());
+    const vector a(det(F)*(FinvT & S0));
+    const scalar area = mag(a);
+    const tensor dAreadF(area*FinvT - a*(inv(F) & (a/area)));
+
+    const vector t(res.tN*n - res.tT);
+    df.dfdD = area*(n*(res.dtNdgN*dgNdx) + res.tN*N - dtTdx);
+    for (direction r = 0; r < 3; ++r)
+    {
+        df.dfdF[r] = t[r]*dAreadF;
+    }
+}
+
+
+void Foam::contactFaces::holdSlaveFaces(const List<slaveFace>& faces)
+{
+    beginHold();
+    forAll(faces, i)
+    {
+        holdFace(i, faces[i].inReach, faces[i].input, faces[i].result);
+    }
+    startHold();
+}
+
+
+void Foam::contactFaces::commitSlaveFaces
+(
+    const List<slaveFace>& faces,
+    const vectorField& S0,
+    const vectorField& x
+)
+{
+    beginCommit();
+    forAll(faces, i)
+    {
+        const slaveFace& sf = faces[i];
+        if (sf.inReach)
+        {
+            commitFace(i, sf.result, sf.n, sf.area, sf.gap, mag(S0[i]), x[i]);
+        }
+        else
+        {
+            // out of reach: an open face, fresh if it comes back
+            commitOpenFace(i);
+        }
+    }
+    endCommit();
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,216 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "rigidContactSurface.H"
+#include "fvMesh.H"
+#include "volMesh.H"
+#include "Time.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::rigidContactSurface::cellDepth
+(
+    const label i,
+    const vector& S0
+) const
+{
+    return patch_.boundaryMesh().mesh().V()[patch_.faceCells()[i]]/mag(S0);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rigidContactSurface::rigidContactSurface
+(
+    const fvPatch& p,
+    const dictionary& dict
+)
+:
+    patch_(p),
+    obstacleDict_(dict.subDict("obstacle")),
+    searchDistance_(-1),
+    searchRefreshFraction_
+    (
+        dict.lookupOrDefault<scalar>("searchRefreshFraction", 0.2)
+    ),
+    search_(p.size(), obstacleSearch()),
+    k_(nullptr)
+{
+    if (searchRefreshFraction_ < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'searchRefreshFraction' in dictionary " << dict.name()
+            << " must be >= 0 (0: a full search at every evaluation), got "
+            << searchRefreshFraction_ << nl << exit(FatalIOError);
+    }
+    searchDistance_ = readSearchDistance(dict, p);
+
+    obstacle_ = rigidObstacle::New
+    (
+        obstacleDict_, p.boundaryMesh().mesh().time().globalPath()
+    );
+
+    // [C2c] the search records as written: a restart then re-projects
+    // where the uninterrupted run would (the same triangles, bit for bit)
+    if (dict.found("searchTriangle"))
+    {
+        const label n = p.size();
+        const labelField tri("searchTriangle", dict, n);
+        const vectorField x0("searchPoint", dict, n);
+        forAll(search_, i)
+        {
+            search_[i].searched = tri[i] != -1;
+            search_[i].hit = tri[i] >= 0;
+            search_[i].hint = max(tri[i], label(-1));
+            search_[i].x0 = x0[i];
+        }
+    }
+}
+
+
+Foam::rigidContactSurface::rigidContactSurface
+(
+    const rigidContactSurface& s,
+    const fvPatch& p
+)
+:
+    contactSurface(),
+    patch_(p),
+    obstacleDict_(s.obstacleDict_),
+    obstacle_
+    (
+        rigidObstacle::New
+        (
+            obstacleDict_, p.boundaryMesh().mesh().time().globalPath()
+        )
+    ),
+    searchDistance_(s.searchDistance_),
+    searchRefreshFraction_(s.searchRefreshFraction_),
+    search_(s.search_),
+    k_(nullptr)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::rigidContactSurface::masterPointOf
+(
+    const label i,
+    masterPoint& mp,
+    const bool derivatives
+) const
+{
+    // [C2] the deformed face centre against the obstacle, the search
+    // reused while the face moves less than a fraction of its cell [C2c]
+    const solidPatchKinematics& k = *k_;
+    mp = masterPoint();
+    obstaclePoint cp;
+    if
+    (
+       !obstacle_->nearest
+        (
+            k.Cf0[i] + k.D[i], k.time, searchDistance_,
+            searchRefreshFraction_*cellDepth(i, k.Sf0[i]), cp, search_[i]
+        )
+    )
+    {
+        return false;
+    }
+    mp.inReach = true;
+    mp.gap = cp.gap;
+    mp.n = cp.n;
+
+    // [C3] the obstacle's material point under the face: its rigid motion
+    // (a Function1 translation and rotation) over the step
+    mp.motion = obstacle_->materialDisplacement(cp.p, k.time - k.deltaT, k.time);
+
+    if (derivatives)
+    {
+        // [C6] curvature seen from x, dgap/dx; a rotating obstacle's
+        // material point moves with the nearest point
+        mp.dgapdx = cp.dgapdx;
+        mp.dndx = cp.dndx;
+        mp.dmotiondx =
+            obstacle_->materialDisplacementGradient(k.time - k.deltaT, k.time)
+          & cp.dpdx;
+    }
+    return true;
+}
+
+
+bool Foam::rigidContactSurface::nearestQuery
+(
+    const label i,
+    const point& x,
+    const scalar t,
+    const vector& S0,
+    obstaclePoint& cp
+) const
+{
+    obstacleSearch record(search_[i]);
+    return obstacle_->nearest
+    (
+        x, t, searchDistance_, searchRefreshFraction_*cellDepth(i, S0), cp,
+        record
+    );
+}
+
+
+void Foam::rigidContactSurface::resetSearches(const label n)
+{
+    search_.setSize(n);
+    search_ = obstacleSearch();
+}
+
+
+void Foam::rigidContactSurface::report(const word& patchName) const
+{
+    // [C2c] obstacle searches since the last report (this step and any
+    // cut-back attempts before it)
+    const labelPair n
+    (
+        returnReduce(obstacle_->searchCounts().first(), sumOp<label>()),
+        returnReduce(obstacle_->searchCounts().second(), sumOp<label>())
+    );
+    if (n.first() + n.second() > 0)
+    {
+        Info<< "    contact " << patchName << ": obstacle searches "
+            << n.first() << ", re-projections " << n.second() << endl;
+    }
+    obstacle_->resetSearchCounts();
+}
+
+
+void Foam::rigidContactSurface::write(Ostream& os) const
+{
+    os.writeKeyword("obstacle") << obstacleDict_;
+    os.writeEntry("searchDistance", searchDistance_);
+    os.writeEntry("searchRefreshFraction", searchRefreshFraction_);
+}
+
+
+void Foam::rigidContactSurface::writeSearches(Ostream& os) const
+{
+    // [C2c] -1 not searched, -2 nothing in reach, else the triangle
+    // followed
+    if (obstacle_->cachesSearches())
+    {
+        labelField tri(search_.size());
+        vectorField x0(search_.size());
+        forAll(search_, i)
+        {
+            tri[i] =
+                !search_[i].searched ? -1
+              : !search_[i].hit ? -2
+              : search_[i].hint;
+            x0[i] = search_[i].x0;
+        }
+        tri.writeEntry("searchTriangle", os);
+        x0.writeEntry("searchPoint", os);
+    }
+}
+
+
+// ************************************************************************* //
