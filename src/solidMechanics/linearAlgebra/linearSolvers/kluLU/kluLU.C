@@ -230,16 +230,12 @@ Foam::linearSolver::performance Foam::linearSolvers::kluLU::solve
 )
 {
     performance p;
-    if (!factorsCurrent_)
+    bool ok = factorsCurrent_;
+    if (ok)
     {
-        x.setConstant(NAN);
-        p.reason =
-            "the matrix could not be factorised (singular), linear solver"
-            " klu of " + dict_.name();
-        return p;
+        p.relativeResidual = solveFactors(b, x);
     }
-    p.relativeResidual = solveFactors(b, x);
-    if (refactored_ && !(p.relativeResidual <= refactorTolerance_))
+    if (ok && refactored_ && !(p.relativeResidual <= refactorTolerance_))
     {
         // the reused pivots have grown: pivot again
         if (debug)
@@ -247,15 +243,19 @@ Foam::linearSolver::performance Foam::linearSolvers::kluLU::solve
             Info<< "        klu: relative residual " << p.relativeResidual
                 << " with reused pivots, factorising again" << endl;
         }
-        if (!factorise())
+        ok = factorise();
+        if (ok)
         {
-            x.setConstant(NAN);
-            p.reason =
-                "the matrix could not be factorised (singular), linear"
-                " solver klu of " + dict_.name();
-            return p;
+            p.relativeResidual = solveFactors(b, x);
         }
-        p.relativeResidual = solveFactors(b, x);
+    }
+    if (!ok)
+    {
+        x.setConstant(NAN);
+        p.reason =
+            "the matrix could not be factorised (singular), linear solver"
+            " klu of " + dict_.name();
+        return p;
     }
     p.converged = allFinite(x);
     if (!p.converged)
