@@ -113,6 +113,48 @@ inline tensor fluxBlock
     return K;
 }
 
+//- fluxBlock(A, dFbar) with dFbar the F-bar derivative of the column
+//  dG, dJbar, in the solved components only (the matrix keeps no others:
+//  4 of the 9 entries in plane strain)
+inline tensor solvedFluxBlock
+(
+    const Eigen::Matrix<double, 3, 9, Eigen::RowMajor>& A,
+    const volumetricAveraging::linearisation& lin,
+    const tensorDerivative& dG,
+    const vector& dJbar,
+    const labelList& comps
+)
+{
+    const tensorDerivative dF(transposed(dG));
+    const vector ds
+    (
+        lin.active
+      ? volumetricAveraging::scaleDerivative(lin, dF, dJbar)
+      : vector::zero
+    );
+    tensor K(Zero);
+    for (const label k : comps)
+    {
+        const tensor dFk
+        (
+            lin.active
+          ? volumetricAveraging::derivative(lin, dF[k], ds[k])
+          : dF[k]
+        );
+        for (const label i : comps)
+        {
+            scalar s = 0;
+            for (direction b = 0; b < 9; ++b)
+            {
+                s += A(i, b)*dFk[b];
+            }
+            K[3*i + k] = s;
+        }
+    }
+    return K;
+}
+
+
 //- Face displacement D_f = u_P + d.G_P and F = I + G_P^T: for a column
 //  with dG_P/du_Q, dD_f/du_Q = delta_PQ I + d.dG_P/du_Q
 static tensor dDface(const vector& d, const tensorDerivative& dG, bool self)
@@ -196,14 +238,7 @@ void Foam::solidDiscretisation::addInternalFaces
         {
             const tensor K
             (
-                fluxBlock
-                (
-                    A,
-                    volumetricAveraging::derivative
-                    (
-                        lin, transposed(fc.dG[q]), fc.dJ[q]
-                    )
-                )
+                solvedFluxBlock(A, lin, fc.dG[q], fc.dJ[q], M.components())
             );
             M.addBlock(P, fc.cells[q], -K);
             M.addBlock(N, fc.cells[q], K);

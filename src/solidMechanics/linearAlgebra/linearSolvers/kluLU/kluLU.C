@@ -1,0 +1,269 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "kluLU.H"
+#include "addToRunTimeSelectionTable.H"
+#include "eigenVector.H"
+
+namespace Foam
+{
+namespace linearSolvers
+{
+    defineTypeNameAndDebug(kluLU, 0);
+    addToRunTimeSelectionTable(linearSolver, kluLU, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::linearSolvers::kluLU::gather()
+{
+    const scalarList& v = matrix_.values();
+    forAll(v, i)
+    {
+        values_[toColumns_[i]] = v[i];
+    }
+}
+
+
+bool Foam::linearSolvers::kluLU::factorise()
+{
+    if (numeric_)
+    {
+        klu_free_numeric(&numeric_, &common_);
+    }
+    numeric_ = klu_factor
+    (
+        colStart_.data(), rowIndex_.data(), values_.data(), symbolic_,
+        &common_
+    );
+    refactored_ = false;
+    factorsCurrent_ = numeric_ && common_.status == KLU_OK;
+    return factorsCurrent_;
+}
+
+
+void Foam::linearSolvers::kluLU::multiply
+(
+    const Eigen::VectorXd& x,
+    Eigen::VectorXd& y
+) const
+{
+    y.setZero(x.size());
+    for (label c = 0; c + 1 < label(colStart_.size()); ++c)
+    {
+        for (int k = colStart_[c]; k < colStart_[c + 1]; ++k)
+        {
+            y(rowIndex_[k]) += values_[k]*x(c);
+        }
+    }
+}
+
+
+Foam::scalar Foam::linearSolvers::kluLU::solveFactors
+(
+    const Eigen::VectorXd& b,
+    Eigen::VectorXd& x
+)
+{
+    x = b;
+    klu_solve(symbolic_, numeric_, x.size(), 1, x.data(), &common_);
+    Eigen::VectorXd Ax;
+    multiply(x, Ax);
+    const scalar normB = b.norm();
+    return normB > 0 ? scalar((b - Ax).norm()/normB) : scalar(0);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::linearSolvers::kluLU::kluLU
+(
+    const dictionary& dict,
+    const blockSparseMatrix& matrix
+)
+:
+    linearSolver(dict, matrix),
+    symbolic_(nullptr),
+    numeric_(nullptr),
+    factorsCurrent_(false),
+    refactored_(false),
+    fresh_(true),
+    refactorTolerance_
+    (
+        dict.lookupOrDefault<scalar>("refactorTolerance", 1e-10)
+    )
+{
+    if (Pstream::parRun())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'type' in dictionary " << dict.name() << " is "
+            << "klu, a serial solver; a parallel run needs a"
+            << " distributed one (type petsc)" << nl << exit(FatalIOError);
+    }
+    if (!(refactorTolerance_ > 0 && refactorTolerance_ < 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'refactorTolerance' in dictionary " << dict.name()
+            << " must be in (0, 1), got " << refactorTolerance_ << nl
+            << exit(FatalIOError);
+    }
+
+    // The compressed columns of the pattern and where each block entry
+    // goes: entries counted per column, then placed row by row (so each
+    // column's rows come out sorted)
+    const label nc = matrix.nComponents();
+    const label n = matrix.nLocalUnknowns();
+    const label lo = matrix.cellNumbering().offset(Pstream::myProcNo());
+    const labelList& rowStart = matrix.rowStart();
+    const labelList& colCells = matrix.colCells();
+
+    colStart_.assign(n + 1, 0);
+    for (label r = 0; r < matrix.nRows(); ++r)
+    {
+        for (label s = rowStart[r]; s < rowStart[r + 1]; ++s)
+        {
+            const label c = colCells[s] - lo;
+            for (label b = 0; b < nc; ++b)
+            {
+                colStart_[c*nc + b + 1] += nc;
+            }
+        }
+    }
+    for (label j = 0; j < n; ++j)
+    {
+        colStart_[j + 1] += colStart_[j];
+    }
+    const label nnz = colStart_[n];
+    rowIndex_.assign(nnz, 0);
+    values_.assign(nnz, 0);
+    toColumns_.assign(matrix.values().size(), 0);
+    std::vector<int> next(colStart_.begin(), colStart_.end() - 1);
+    for (label r = 0; r < matrix.nRows(); ++r)
+    {
+        for (label a = 0; a < nc; ++a)
+        {
+            for (label s = rowStart[r]; s < rowStart[r + 1]; ++s)
+            {
+                const label c = colCells[s] - lo;
+                for (label b = 0; b < nc; ++b)
+                {
+                    const int k = next[c*nc + b]++;
+                    rowIndex_[k] = r*nc + a;
+                    toColumns_[(s*nc + a)*nc + b] = k;
+                }
+            }
+        }
+    }
+
+    klu_defaults(&common_);
+    symbolic_ = klu_analyze
+    (
+        n, colStart_.data(), rowIndex_.data(), &common_
+    );
+    if (!symbolic_)
+    {
+        FatalErrorInFunction
+            << "KLU could not analyse the pattern of " << n
+            << " unknowns (status " << common_.status << ")"
+            << abort(FatalError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * //
+
+Foam::linearSolvers::kluLU::~kluLU()
+{
+    if (numeric_)
+    {
+        klu_free_numeric(&numeric_, &common_);
+    }
+    if (symbolic_)
+    {
+        klu_free_symbolic(&symbolic_, &common_);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::string Foam::linearSolvers::kluLU::description() const
+{
+    return
+        "sparse LU (KLU, AMD ordering), pivots of a load step's first"
+        " factorisation reused while the solves stay accurate to "
+      + Foam::name(refactorTolerance_);
+}
+
+
+bool Foam::linearSolvers::kluLU::update()
+{
+    gather();
+    if (fresh_ || !numeric_)
+    {
+        fresh_ = false;
+        return factorise();
+    }
+    // the pivots of this step's first factorisation; a zero pivot
+    // (klu_refactor fails) asks for a pivot search
+    refactored_ = true;
+    factorsCurrent_ =
+        klu_refactor
+        (
+            colStart_.data(), rowIndex_.data(), values_.data(), symbolic_,
+            numeric_, &common_
+        ) == 1
+     && common_.status == KLU_OK;
+    return factorsCurrent_ || factorise();
+}
+
+
+Foam::linearSolver::performance Foam::linearSolvers::kluLU::solve
+(
+    const Eigen::VectorXd& b,
+    Eigen::VectorXd& x,
+    const scalar
+)
+{
+    performance p;
+    bool ok = factorsCurrent_;
+    if (ok)
+    {
+        p.relativeResidual = solveFactors(b, x);
+    }
+    if (ok && refactored_ && !(p.relativeResidual <= refactorTolerance_))
+    {
+        // the reused pivots have grown: pivot again
+        if (debug)
+        {
+            Info<< "        klu: relative residual " << p.relativeResidual
+                << " with reused pivots, factorising again" << endl;
+        }
+        ok = factorise();
+        if (ok)
+        {
+            p.relativeResidual = solveFactors(b, x);
+        }
+    }
+    if (!ok)
+    {
+        x.setConstant(NAN);
+        p.reason =
+            "the matrix could not be factorised (singular), linear solver"
+            " klu of " + dict_.name();
+        return p;
+    }
+    p.converged = allFinite(x);
+    if (!p.converged)
+    {
+        p.reason = "the KLU solve returned non-finite values";
+    }
+    return p;
+}
+
+
+// ************************************************************************* //
