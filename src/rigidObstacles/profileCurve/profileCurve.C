@@ -258,6 +258,22 @@ Foam::profileCurve::nearestPoint Foam::profileCurve::nearestOn
 }
 
 
+Foam::scalar Foam::profileCurve::distanceBound
+(
+    const segment& s,
+    const vector2D& p
+) const
+{
+    if (s.isArc())
+    {
+        return mag(mag(p - s.centre) - s.radius);
+    }
+    const vector2D e(s.end - s.start);
+    const vector2D d(p - s.start);
+    return mag(e.x()*d.y() - e.y()*d.x())/mag(e);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::profileCurve::profileCurve(const dictionary& dict)
@@ -300,11 +316,35 @@ Foam::profileCurve::nearestPoint Foam::profileCurve::nearest
     const vector2D& p
 ) const
 {
+    // The die is searched at every face in every residual evaluation:
+    // evaluate first the segment with the smallest distance bound, then,
+    // in walking order, only the segments whose bound does not exceed its
+    // distance (with a margin far above round-off). The segment that a
+    // loop over all segments picks (the first at the least distance) is
+    // among them, so the answer is the same bit for bit.
+    label likely = 0;
+    scalar likelyBound = GREAT;
+    forAll(segments_, si)
+    {
+        const scalar b = distanceBound(segments_[si], p);
+        if (b < likelyBound)
+        {
+            likelyBound = b;
+            likely = si;
+        }
+    }
+    const nearestPoint npLikely(nearestOn(likely, p));
+    const scalar reach = mag(p - npLikely.p)*(1 + 1e-9) + 1e-12*length_;
+
     nearestPoint best;
     scalar bestDist2 = GREAT;
     forAll(segments_, si)
     {
-        const nearestPoint np(nearestOn(si, p));
+        if (si != likely && distanceBound(segments_[si], p) > reach)
+        {
+            continue;
+        }
+        const nearestPoint np(si == likely ? npLikely : nearestOn(si, p));
         const scalar d2 = magSqr(p - np.p);
         if (d2 < bestDist2)
         {
@@ -314,9 +354,15 @@ Foam::profileCurve::nearestPoint Foam::profileCurve::nearest
     }
 
     // At a joint whose tangent turns, both segments give the corner: take
-    // the bisector of their normals (on a smooth joint they agree anyway)
+    // the bisector of their normals (on a smooth joint they agree anyway).
+    // A point inside its segment is no other segment's: no corner
     const label n = segments_.size();
     const scalar tol = 1e-12*max(length(), SMALL);
+    const segment& sb = segments_[best.segmenti];
+    if (mag(best.p - sb.start) > tol && mag(best.p - sb.end) > tol)
+    {
+        return best;
+    }
     for (const label nbr : {best.segmenti - 1, best.segmenti + 1})
     {
         if (nbr < 0 || nbr >= n)
