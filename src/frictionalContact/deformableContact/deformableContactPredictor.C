@@ -1,0 +1,82 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+
+Description
+    deformableContact: the predictor that keeps the contact for a pair of
+    deformable bodies ([S18b] in doc/theory.md): the slave faces in contact
+    at the last converged state keep their converged gap against the
+    predicted master surface.
+
+\*---------------------------------------------------------------------------*/
+
+#include "deformableContactFvPatchVectorField.H"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::deformableContactFvPatchVectorField::predictorCorrection
+(
+    const solidPatchKinematics& k,
+    vectorField& dD
+) const
+{
+    // [S18b] as against a rigid obstacle: the extrapolated step repeats the
+    // last one's closing of the gap and predicts the faces out of contact
+    // again. Here the master surface moves with its body, so the gaps of
+    // both states are the pair's [C10]-[C11b]: at the prediction (both
+    // bodies extrapolated) and at the converged state (both sides' face
+    // displacements as committed). The slave's faces are corrected; the
+    // master's follow their body. Every processor takes part (the master
+    // surface is gathered, [C14])
+    if (!slave_)
+    {
+        return 0;
+    }
+
+    side sl;
+    side ms;
+    List<slaveFace> predicted;
+    evaluate(sl, ms, predicted, k.deltaT);
+
+    // The converged state: the committed face displacements of both
+    // sides, with the predicted deformation gradients (the solver keeps no
+    // converged gradient; within a face the gradient tilts the polygon, and
+    // its change over a step moves the gap by far less than the
+    // extrapolated closing it corrects)
+    side slOld(sl);
+    side msOld(ms);
+    slOld.D = slOld.Dold;
+    msOld.D = msOld.Dold;
+    forAll(slOld.D, i)
+    {
+        faceGeometry(slOld, i);
+    }
+    forAll(msOld.D, m)
+    {
+        faceGeometry(msOld, m);
+    }
+    List<slaveFace> converged;
+    evaluatePair(slOld, msOld, k.deltaT, converged);
+
+    label nCorrected = 0;
+    forAll(dD, i)
+    {
+        const slaveFace& o = converged[i];
+        const slaveFace& p = predicted[i];
+        if
+        (
+            o.inReach && p.inReach
+         && smoothedPenetration(-o.gap) > 0
+         && p.gap > o.gap
+        )
+        {
+            // n: the master's normal, into the slave body
+            dD[i] = (o.gap - p.gap)*p.n;
+            ++nCorrected;
+        }
+    }
+    return nCorrected;
+}
+
+
+// ************************************************************************* //
