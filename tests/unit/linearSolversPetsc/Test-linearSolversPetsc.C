@@ -172,6 +172,29 @@ void symmetric()
         "3-D default: petsc with gamg",
         o3[0].description.find("gamg") != std::string::npos
     );
+
+    // Iterative or direct (newtonSolver's chord step [S16b] only for the
+    // former): gamg and ILU iterative, MUMPS and eigenLU direct
+    for
+    (
+        const auto& c : std::vector<std::pair<std::string, bool>>
+        {
+            {"type petsc; preconditioner gamg;", true},
+            {"type petsc; ksp bcgs; preconditioner ilu;", true},
+            {"type petsc; preconditioner mumps;", false},
+            {"type petsc; ksp preonly; preconditioner mumps;", false},
+            {"type eigenLU;", false}
+        }
+    )
+    {
+        solverDict d(c.first);
+        autoPtr<linearSolver> s = linearSolver::New(d(), M3());
+        unitTest::checkTrue
+        (
+            c.first + (c.second ? " iterative" : " direct"),
+            s->inexact() == c.second
+        );
+    }
     const outcome& gamg = o3[2];
 
     // The 3-D gamg default smooths each level with one Richardson + SOR

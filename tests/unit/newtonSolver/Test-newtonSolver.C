@@ -26,7 +26,8 @@ Description
       - finalChordStep (default yes): once the force test is met, the
         iteration left for the displacement test takes no new Jacobian
         (one Jacobian fewer per chord step), with the same iterations and
-        a solution within the tolerance as without [S16b].
+        a solution within the tolerance as without, if the linear solves
+        are iterative; with a direct solver no chord step [S16b].
 
 \*---------------------------------------------------------------------------*/
 
@@ -54,6 +55,8 @@ public:
     static constexpr scalar Kp = 1e4;
 
     kindType kind;
+    //- Pretend the linear solves are iterative (inexactJacobianSolve)
+    bool inexact = false;
     Eigen::MatrixXd K;
     Eigen::VectorXd b;
     Eigen::MatrixXd M;
@@ -138,6 +141,11 @@ public:
     virtual string failure() const
     {
         return "test: singular";
+    }
+
+    virtual bool inexactJacobianSolve() const
+    {
+        return inexact;
     }
 
     virtual linearSolver::performance solveJacobian
@@ -397,7 +405,9 @@ int main()
     {
         // the force test is met first (forceTolerance 1e-6 of |F| = 1),
         // the displacement test (1e-10) needs one more step: by default a
-        // chord step with the Jacobian of the iteration before
+        // chord step with the Jacobian of the iteration before, if the
+        // linear solves are iterative (k = 0, 1); a direct solver's steps
+        // stay Newton steps (k = 2)
         testSystem ref(testSystem::SPRINGS);
         newtonSolver tight
         (
@@ -407,18 +417,19 @@ int main()
         tight.solve(ref, xStar, x0);
 
         const char* common = "forceTolerance 1e-6; displacementTolerance 1e-10;";
-        newtonSolver::result res[2];
-        label nJacobians[2];
-        for (label k = 0; k < 2; ++k)
+        newtonSolver::result res[3];
+        label nJacobians[3];
+        for (label k = 0; k < 3; ++k)
         {
             testSystem sys(testSystem::SPRINGS);
+            sys.inexact = k < 2;
             newtonSolver newton
             (
                 controls
                 (
                     (
                         std::string(common)
-                      + (k == 0 ? "" : " finalChordStep no;")
+                      + (k == 1 ? " finalChordStep no;" : "")
                     ).c_str()
                 )
             );
@@ -427,7 +438,9 @@ int main()
             nJacobians[k] = sys.jacobianResiduals.size();
             const scalar err = (x - xStar).cwiseAbs().maxCoeff()
                /(x - x0).cwiseAbs().maxCoeff();
-            Info<< "    " << (k == 0 ? "chord (default)" : "no chord") << ": "
+            Info<< "    "
+                << (k == 0 ? "chord (default)" : k == 1 ? "no chord" : "direct")
+                << ": "
                 << res[k].newtonIterations << " iterations, "
                 << nJacobians[k] << " Jacobians, " << res[k].chordSteps
                 << " chord steps, true relative error " << err << endl;
@@ -442,6 +455,7 @@ int main()
         }
         checkAbs("default: one chord step", res[0].chordSteps, 1, 0);
         checkAbs("finalChordStep no: none", res[1].chordSteps, 0, 0);
+        checkAbs("a direct solver: none", res[2].chordSteps, 0, 0);
         checkAbs
         (
             "the same Newton iterations", res[0].newtonIterations,

@@ -343,10 +343,14 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
         // left, in Newton's quadratic phase (the last correction below
         // the square root of the tolerance: the next one about its
         // square): the correction that decides the test is solved with
-        // the Jacobian and set-up of the last iteration. Once per solve:
-        // a chord step converges only linearly
+        // the Jacobian and set-up of the last iteration. Once per solve
+        // (a chord step converges only linearly), and only with an
+        // iterative linear solver, whose correction differs from
+        // Newton's by its tolerance already (a direct solver's steps stay
+        // exact Newton steps)
         const bool chord =
             finalChordStep_ && !jacobianFree_ && haveJacobian && !chordTaken
+         && sys.inexactJacobianSolve()
          && res.forceResidual <= forceTol_
          && res.displacementResidual <= Foam::sqrt(displacementTol_);
         if (!step(sys, x, R, linTol, it, chord, lastKrylov, dx, res))
