@@ -106,6 +106,7 @@ Foam::linearSolvers::petscSolver::petscSolver
     ksp_(nullptr),
     r_(nullptr),
     nModes_(-1),
+    inexact_(true),
     setUp_(false),
     setUpFailure_("update() was not called"),
     checkedOptions_(false),
@@ -121,6 +122,21 @@ Foam::linearSolvers::petscSolver::petscSolver
 
     description_ = describe();
     Info<< "Linear solver petsc: " << description_.c_str() << endl;
+
+    // A direct solve (MUMPS or PETSc's LU as the preconditioner, whatever
+    // the Krylov method around it) is exact to round-off
+    {
+        KSPType ksp = nullptr;
+        PC pc = nullptr;
+        PCType pcType = nullptr;
+        check(KSPGetType(ksp_, &ksp), "querying the Krylov method");
+        check(KSPGetPC(ksp_, &pc), "getting the preconditioner");
+        check(PCGetType(pc, &pcType), "querying the preconditioner");
+        const std::string pcs(pcType ? pcType : "");
+        inexact_ =
+            std::string(ksp ? ksp : "") != KSPPREONLY
+         && pcs != PCLU && pcs != PCCHOLESKY;
+    }
 }
 
 

@@ -182,9 +182,13 @@ void Foam::linearSolvers::petscSolver::createKsp()
         // and stalled GMRES on the sliding-friction Jacobian (relative
         // residual 0.9 after 500 iterations); SOR needs nonzero diagonals,
         // which the translations' coarse levels have (doc/performance.md
-        // section 12)
+        // section 12). One sweep per level (PETSc's default: two): on the
+        // 3-D frictional ring 27 % more Krylov iterations, each 40 % cheaper
+        // (101 520 cells serially: 20 % less solve CPU, the same Newton
+        // iterations; doc/performance.md section 12)
         setDefault("mg_levels_ksp_type", "richardson");
         setDefault("mg_levels_pc_type", "sor");
+        setDefault("mg_levels_ksp_max_it", "1");
     }
     else if (pcName_ == "boomerAMG")
     {

@@ -172,7 +172,62 @@ void symmetric()
         "3-D default: petsc with gamg",
         o3[0].description.find("gamg") != std::string::npos
     );
+
+    // Iterative or direct (newtonSolver's chord step [S16b] only for the
+    // former): gamg and ILU iterative, MUMPS and eigenLU direct
+    for
+    (
+        const auto& c : std::vector<std::pair<std::string, bool>>
+        {
+            {"type petsc; preconditioner gamg;", true},
+            {"type petsc; ksp bcgs; preconditioner ilu;", true},
+            {"type petsc; preconditioner mumps;", false},
+            {"type petsc; ksp preonly; preconditioner mumps;", false},
+            {"type eigenLU;", false}
+        }
+    )
+    {
+        solverDict d(c.first);
+        autoPtr<linearSolver> s = linearSolver::New(d(), M3());
+        unitTest::checkTrue
+        (
+            c.first + (c.second ? " iterative" : " direct"),
+            s->inexact() == c.second
+        );
+    }
     const outcome& gamg = o3[2];
+
+    // The 3-D gamg default smooths each level with one Richardson + SOR
+    // sweep (mg_levels_ksp_max_it 1; doc/performance.md section 12): the
+    // default takes the iterations of that setting spelt out, not those
+    // of two sweeps (PETSc's default), which differ on this operator
+    {
+        const std::string base = "type petsc; ksp gmres; preconditioner gamg;";
+        const outcome one = solveWith
+        (
+            base + " options { mg_levels_ksp_max_it 1; }", M3()
+        );
+        const outcome two = solveWith
+        (
+            base + " options { mg_levels_ksp_max_it 2; }", M3()
+        );
+        checkSolved("3-D gmres + gamg, 1 sweep", one, tolKrylov);
+        checkSolved("3-D gmres + gamg, 2 sweeps", two, tolKrylov);
+        Info<< "    gamg default " << o3[0].p.iterations << ", 1 sweep "
+            << one.p.iterations << ", 2 sweeps " << two.p.iterations
+            << " iterations" << endl;
+        unitTest::checkTrue
+        (
+            "3-D default gamg: one sweep per level (iterations of"
+            " mg_levels_ksp_max_it 1)",
+            o3[0].p.iterations == one.p.iterations
+        );
+        unitTest::checkTrue
+        (
+            "3-D gamg: 1 and 2 sweeps per level tell apart",
+            one.p.iterations != two.p.iterations
+        );
+    }
 
     // GAMG's near-null space on an elastic operator: the rigid-body modes
     // of the coordinates against the translations (the 3-D default, for

@@ -22,7 +22,12 @@ Description
         tolerance (default 1e-4);
       - the displacement test by the error estimate stops earlier than by
         the last correction, and the returned iterate's true error is
-        within the tolerance [S16b].
+        within the tolerance [S16b];
+      - finalChordStep (default yes): once the force test is met, the
+        iteration left for the displacement test takes no new Jacobian
+        (one Jacobian fewer per chord step), with the same iterations and
+        a solution within the tolerance as without, if the linear solves
+        are iterative; with a direct solver no chord step [S16b].
 
 \*---------------------------------------------------------------------------*/
 
@@ -50,6 +55,8 @@ public:
     static constexpr scalar Kp = 1e4;
 
     kindType kind;
+    //- Pretend the linear solves are iterative (inexactJacobianSolve)
+    bool inexact = false;
     Eigen::MatrixXd K;
     Eigen::VectorXd b;
     Eigen::MatrixXd M;
@@ -134,6 +141,11 @@ public:
     virtual string failure() const
     {
         return "test: singular";
+    }
+
+    virtual bool inexactJacobianSolve() const
+    {
+        return inexact;
     }
 
     virtual linearSolver::performance solveJacobian
@@ -353,7 +365,10 @@ int main()
         // (the corrections are 1.1e-1, 1.7e-2, 3.4e-4, 1.3e-7 of the
         // increment: 1e-5 lies between the 3rd correction and the
         // estimate of the error after it, 6.9e-6)
-        const char* common = "forceTolerance 1; displacementTolerance 1e-5;";
+        // (Newton steps only: a chord step is not estimated from)
+        const char* common =
+            "forceTolerance 1; displacementTolerance 1e-5;"
+            " finalChordStep no;";
         label iterations[2];
         for (label k = 0; k < 2; ++k)
         {
@@ -382,6 +397,69 @@ int main()
         checkBelow
         (
             "estimate: fewer iterations", iterations[0], iterations[1] - 0.5
+        );
+    }
+
+    Info<< "finalChordStep: the displacement test's step without a new"
+        << " Jacobian" << endl;
+    {
+        // the force test is met first (forceTolerance 1e-6 of |F| = 1),
+        // the displacement test (1e-10) needs one more step: by default a
+        // chord step with the Jacobian of the iteration before, if the
+        // linear solves are iterative (k = 0, 1); a direct solver's steps
+        // stay Newton steps (k = 2)
+        testSystem ref(testSystem::SPRINGS);
+        newtonSolver tight
+        (
+            controls("forceTolerance 1e-14; displacementTolerance 1e-14;")
+        );
+        Eigen::VectorXd xStar(Eigen::VectorXd::Zero(3)), x0(xStar);
+        tight.solve(ref, xStar, x0);
+
+        const char* common = "forceTolerance 1e-6; displacementTolerance 1e-10;";
+        newtonSolver::result res[3];
+        label nJacobians[3];
+        for (label k = 0; k < 3; ++k)
+        {
+            testSystem sys(testSystem::SPRINGS);
+            sys.inexact = k < 2;
+            newtonSolver newton
+            (
+                controls
+                (
+                    (
+                        std::string(common)
+                      + (k == 1 ? " finalChordStep no;" : "")
+                    ).c_str()
+                )
+            );
+            Eigen::VectorXd x(Eigen::VectorXd::Zero(3));
+            res[k] = newton.solve(sys, x, x0);
+            nJacobians[k] = sys.jacobianResiduals.size();
+            const scalar err = (x - xStar).cwiseAbs().maxCoeff()
+               /(x - x0).cwiseAbs().maxCoeff();
+            Info<< "    "
+                << (k == 0 ? "chord (default)" : k == 1 ? "no chord" : "direct")
+                << ": "
+                << res[k].newtonIterations << " iterations, "
+                << nJacobians[k] << " Jacobians, " << res[k].chordSteps
+                << " chord steps, true relative error " << err << endl;
+            checkTrue("converged", res[k].converged);
+            checkBelow("true error within the tolerance", err, 1e-10);
+            checkAbs
+            (
+                "Jacobians = Newton iterations - chord steps",
+                nJacobians[k],
+                res[k].newtonIterations - res[k].chordSteps, 0
+            );
+        }
+        checkAbs("default: one chord step", res[0].chordSteps, 1, 0);
+        checkAbs("finalChordStep no: none", res[1].chordSteps, 0, 0);
+        checkAbs("a direct solver: none", res[2].chordSteps, 0, 0);
+        checkAbs
+        (
+            "the same Newton iterations", res[0].newtonIterations,
+            res[1].newtonIterations, 0
         );
     }
 

@@ -76,6 +76,7 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
     fullStepFallback_(dict.lookupOrDefault<bool>("fullStepFallback", false)),
     rejectPredictor_(dict.lookupOrDefault<bool>("rejectPredictor", false)),
     initialForcing_(dict.lookupOrDefault<scalar>("initialForcingTerm", 1e-4)),
+    finalChordStep_(dict.lookupOrDefault<bool>("finalChordStep", true)),
     estimateError_(readDisplacementTest(dict)),
     holdLinearisation_
     (
@@ -145,6 +146,7 @@ bool Foam::newtonSolver::step
     const Eigen::VectorXd& R,
     const scalar linTol,
     const label it,
+    const bool chord,
     label& lastKrylov,
     Eigen::VectorXd& dx,
     result& res
@@ -153,9 +155,10 @@ bool Foam::newtonSolver::step
     if (!jacobianFree_)
     {
         // [S14] exact Newton: the assembled Jacobian at x, solved to the
-        // forcing term (a direct solver solves exactly)
+        // forcing term (a direct solver solves exactly); a chord step
+        // [S16b] solves with the Jacobian and set-up already in place
         cpuTime timer;
-        if (!sys.updateJacobian(x))
+        if (!chord && !sys.updateJacobian(x))
         {
             res.reason = sys.failure();
             return false;
@@ -167,7 +170,8 @@ bool Foam::newtonSolver::step
             sys.solveJacobian(R, dx, normR > 0 ? min(linTol/normR, 0.1) : 0.1);
         if (verbose_)
         {
-            Info<< "        Jacobian " << tJacobian << " s, linear solve "
+            Info<< "        " << (chord ? "chord step, " : "")
+                << "Jacobian " << tJacobian << " s, linear solve "
                 << timer.cpuTimeIncrement() << " s (CPU)" << endl;
         }
         lastKrylov = perf.iterations;
@@ -255,6 +259,10 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
     bool firstSolve = true;
     bool fullLast = false;
 
+    // [S16b] a Jacobian of this solve is in place; a chord step taken
+    bool haveJacobian = false;
+    bool chordTaken = false;
+
     for (label it = 0; it <= maxNewton_; ++it)
     {
         if (!gFinite(R))
@@ -331,10 +339,27 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
         }
         const scalar linTol = max(eta*normR, 0.1*forceTol_*Fscale);
 
-        if (!step(sys, x, R, linTol, it, lastKrylov, dx, res))
+        // [S16b] the force test is met and only the displacement test is
+        // left, in Newton's quadratic phase (the last correction below
+        // the square root of the tolerance: the next one about its
+        // square): the correction that decides the test is solved with
+        // the Jacobian and set-up of the last iteration. Once per solve
+        // (a chord step converges only linearly), and only with an
+        // iterative linear solver, whose correction differs from
+        // Newton's by its tolerance already (a direct solver's steps stay
+        // exact Newton steps)
+        const bool chord =
+            finalChordStep_ && !jacobianFree_ && haveJacobian && !chordTaken
+         && sys.inexactJacobianSolve()
+         && res.forceResidual <= forceTol_
+         && res.displacementResidual <= Foam::sqrt(displacementTol_);
+        if (!step(sys, x, R, linTol, it, chord, lastKrylov, dx, res))
         {
             break;
         }
+        haveJacobian = true;
+        chordTaken = chordTaken || chord;
+        res.chordSteps += chord;
         res.krylovIterations += lastKrylov;
         ++res.newtonIterations;
 
@@ -408,6 +433,7 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
             normBest = normR;
             itBest = it + 1;
             dx.setZero();
+            haveJacobian = chordTaken = false;
             dxPrev = dxCur = -1;
             fullPrev = fullLast = false;
             firstSolve = true;
@@ -447,7 +473,8 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
         dxPrev = dxCur;
         dxCur = gMaxNorm(dx);
         fullPrev = fullLast;
-        fullLast = decreased && lambda == 1;
+        // (a chord step's contraction is not Newton's: no estimate from it)
+        fullLast = decreased && lambda == 1 && !chord;
         x = xTrial;
         R = Rtrial;
         normRprev = normR;
