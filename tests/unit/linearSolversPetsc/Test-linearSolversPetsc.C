@@ -29,7 +29,10 @@ Description
         MUMPS and with ILU (update() false or solve() not converged with
         the reason, then a good matrix is solved again; with a misspelt
         raw option the failed set-up's reason names it); maxIterations
-        reached (not converged, reason names maxIterations).
+        reached (not converged, reason names maxIterations); GMRES without
+        a preconditioner on a matrix with a decoupled cell and b on that
+        cell: DIVERGED_BREAKDOWN reported (not converged, the reason, the
+        true relative residual 1).
 
     With -report <file> (argList; serial, or -parallel under mpirun): the
     3-D (or -dimension 2) operator of -cells n per direction solved with
@@ -523,6 +526,55 @@ void errors()
             q.converged
          && maxError(x, eo::exactSolution(M())) < tolKrylov
         );
+    }
+
+    Info<< "GMRES breakdown (a cell decoupled: zero block row and column)"
+        << endl;
+    {
+        // b only on the decoupled cell lies in the null space of M: the
+        // first Krylov vector maps to zero, GMRES's Hessenberg matrix gets
+        // a zero diagonal (DIVERGED_BREAKDOWN, not the happy breakdown)
+        // and the solution stays the initial guess: not converged, the
+        // reason named, the true relative residual 1 (Newton then rejects
+        // the correction, doc/theory.md [S16c])
+        solverDict d("type petsc; ksp gmres; preconditioner none;");
+        autoPtr<linearSolver> s = linearSolver::New(d(), M());
+        scalarList& v = const_cast<scalarList&>(M->values());
+        const scalarList good(v);
+        const label r = 5, nc = M->nComponents();
+        for (label i = 0; i < M->nRows(); ++i)
+        {
+            for (label k = M->rowStart()[i]; k < M->rowStart()[i + 1]; ++k)
+            {
+                if (i == r || k == M->find(i, M->globalRow(r)))
+                {
+                    for (label j = k*nc*nc; j < (k + 1)*nc*nc; ++j)
+                    {
+                        v[j] = 0;
+                    }
+                }
+            }
+        }
+        Eigen::VectorXd b = Eigen::VectorXd::Zero(M->nLocalUnknowns());
+        b.segment(r*nc, nc).setOnes();
+        const bool updated = s->update();
+        Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
+        const linearSolver::performance p = s->solve(b, x, 1e-10);
+        Info<< "    update " << updated << ", converged " << p.converged
+            << ", " << p.iterations << " iterations, residual "
+            << p.relativeResidual << ", reason: " << p.reason.c_str() << endl;
+        unitTest::checkTrue
+        (
+            "breakdown: not converged, reason DIVERGED_BREAKDOWN",
+            updated && !p.converged
+         && p.reason.find("DIVERGED_BREAKDOWN") != std::string::npos
+        );
+        unitTest::checkAbs
+        (
+            "breakdown: true relative residual 1 (x the initial guess)",
+            p.relativeResidual, 1, 1e-12
+        );
+        v = good;
     }
 
     {

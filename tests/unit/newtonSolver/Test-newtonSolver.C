@@ -27,7 +27,12 @@ Description
         iteration left for the displacement test takes no new Jacobian
         (one Jacobian fewer per chord step), with the same iterations and
         a solution within the tolerance as without, if the linear solves
-        are iterative; with a direct solver no chord step [S16b].
+        are iterative; with a direct solver no chord step [S16b];
+      - a linear solve that stops short (mock of a GMRES breakdown) with a
+        true relative residual >= 1: the solve fails at once, naming the
+        reason, x untouched; below 1 the correction is taken and Newton
+        converges; a chord step's failed solve is redone with a new
+        Jacobian [S16c].
 
 \*---------------------------------------------------------------------------*/
 
@@ -63,6 +68,14 @@ public:
     List<scalar> jacobianResiduals;
     //- The relative tolerance asked of every linear solve
     List<scalar> relTols;
+    //- Mock of a Krylov solve that stops short (a GMRES breakdown): if
+    //  > 0, solves (all of them, or with chordOnly only those with the
+    //  Jacobian of the solve before: chord steps) return not converged,
+    //  reason DIVERGED_BREAKDOWN, with dx = (1 - r) M^-1 b, whose true
+    //  relative residual |b - M dx|/|b| is r
+    scalar breakdownResidual = 0;
+    bool chordOnly = false;
+    label nSolvesSinceJacobian = 0;
 
     explicit testSystem(const kindType k)
     :
@@ -116,6 +129,7 @@ public:
         Eigen::VectorXd R;
         residual(x, R);
         jacobianResiduals.append(R.norm());
+        nSolvesSinceJacobian = 0;
         switch (kind)
         {
             case SPRINGS:
@@ -159,6 +173,19 @@ public:
         dx = M.lu().solve(r);
         linearSolver::performance p;
         p.converged = true;
+        if
+        (
+            breakdownResidual > 0
+         && (!chordOnly || nSolvesSinceJacobian > 0)
+        )
+        {
+            dx *= 1 - breakdownResidual;
+            p.converged = false;
+            p.iterations = 30;
+            p.relativeResidual = breakdownResidual;
+            p.reason = "DIVERGED_BREAKDOWN";
+        }
+        ++nSolvesSinceJacobian;
         return p;
     }
 };
@@ -460,6 +487,86 @@ int main()
         (
             "the same Newton iterations", res[0].newtonIterations,
             res[1].newtonIterations, 0
+        );
+    }
+
+    Info<< "A linear solve that breaks down [S16c]" << endl;
+    {
+        // true relative residual 3 (GMRES's breakdown on the 3-D
+        // two-sphere contact Jacobian: 1.1-18): no descent direction; the
+        // Newton solve fails at once with the reason, x untouched (the
+        // caller retries the step). Before, the correction was taken and
+        // the solve crept on line-search fractions to maxNewtonIterations
+        testSystem sys(testSystem::SPRINGS);
+        sys.breakdownResidual = 3;
+        newtonSolver newton(controls("forceTolerance 1e-10;"));
+        Eigen::VectorXd x(Eigen::VectorXd::Zero(3)), x0(x);
+        const newtonSolver::result res = newton.solve(sys, x, x0);
+        Info<< "    residual 3: converged " << res.converged << ", "
+            << res.newtonIterations << " iterations, reason: "
+            << res.reason.c_str() << endl;
+        checkTrue("residual 3: not converged", !res.converged);
+        checkTrue
+        (
+            "residual 3: the reason names the breakdown and the residual",
+            res.reason.find("DIVERGED_BREAKDOWN") != std::string::npos
+         && res.reason.find("no descent direction") != std::string::npos
+        );
+        checkAbs("residual 3: no Newton step taken", res.newtonIterations, 0, 0);
+        checkAbs("residual 3: x untouched", x.norm(), 0, 0);
+
+        // exactly 1: not below 1, rejected (GMRES that breaks down in its
+        // first cycle returns the initial guess, dx = 0)
+        testSystem sys1(testSystem::SPRINGS);
+        sys1.breakdownResidual = 1;
+        Eigen::VectorXd x1(Eigen::VectorXd::Zero(3));
+        const newtonSolver::result res1 = newton.solve(sys1, x1, x0);
+        checkTrue
+        (
+            "residual 1 (dx = 0): fails with the reason",
+            !res1.converged && res1.newtonIterations == 0
+         && res1.reason.find("DIVERGED_BREAKDOWN") != std::string::npos
+        );
+
+        // 0.5: a descent direction, taken (inexact Newton, linear rate)
+        testSystem sys2(testSystem::SPRINGS);
+        sys2.breakdownResidual = 0.5;
+        Eigen::VectorXd x2(Eigen::VectorXd::Zero(3));
+        const newtonSolver::result res2 =
+            newtonSolver
+            (
+                controls("forceTolerance 1e-10; maxNewtonIterations 60;")
+            ).solve(sys2, x2, x0);
+        Eigen::VectorXd R;
+        sys2.residual(x2, R);
+        Info<< "    residual 0.5: converged " << res2.converged << " in "
+            << res2.newtonIterations << " iterations" << endl;
+        checkTrue("residual 0.5: converged", res2.converged);
+        checkBelow("residual 0.5: |R| at the solution", R.norm(), 1e-9);
+
+        // a chord step whose solve breaks down takes a new Jacobian
+        // instead: converged, no chord step counted, one Jacobian per
+        // Newton iteration
+        testSystem sys3(testSystem::SPRINGS);
+        sys3.inexact = true;
+        sys3.breakdownResidual = 3;
+        sys3.chordOnly = true;
+        Eigen::VectorXd x3(Eigen::VectorXd::Zero(3));
+        const newtonSolver::result res3 =
+            newtonSolver
+            (
+                controls("forceTolerance 1e-6; displacementTolerance 1e-10;")
+            ).solve(sys3, x3, x0);
+        Info<< "    chord step broken down: converged " << res3.converged
+            << ", " << res3.newtonIterations << " iterations, "
+            << sys3.jacobianResiduals.size() << " Jacobians, "
+            << res3.chordSteps << " chord steps" << endl;
+        checkTrue("chord breakdown: converged", res3.converged);
+        checkAbs("chord breakdown: no chord step", res3.chordSteps, 0, 0);
+        checkAbs
+        (
+            "chord breakdown: a Jacobian per Newton iteration",
+            sys3.jacobianResiduals.size(), res3.newtonIterations, 0
         );
     }
 

@@ -146,7 +146,7 @@ bool Foam::newtonSolver::step
     const Eigen::VectorXd& R,
     const scalar linTol,
     const label it,
-    const bool chord,
+    bool& chord,
     label& lastKrylov,
     Eigen::VectorXd& dx,
     result& res
@@ -183,10 +183,42 @@ bool Foam::newtonSolver::step
               : perf.reason;
             return false;
         }
-        if (!perf.converged && verbose_)
+        if (!perf.converged)
         {
-            Info<< "        linear solver: " << perf.reason.c_str()
-                << ", relative residual " << perf.relativeResidual << endl;
+            // [S16c] a Krylov solve that stopped short (maxIterations, a
+            // breakdown) is a Newton direction only while its true
+            // residual is below |R|: then R.M dx > 0, a descent direction
+            // of |R|^2. Otherwise the line search only creeps on the
+            // non-smooth parts of R: the solve fails, as a Jacobian that
+            // cannot be factorised does (the step is retried
+            // Jacobian-free, then cut back [S18]); a chord step is first
+            // retried with a new Jacobian
+            const scalar rel = perf.relativeResidual;
+            const bool descent = rel < 1;
+            Info<< "        linear solve not converged ("
+                << (perf.reason.empty() ? string("no reason") : perf.reason)
+                .c_str()
+                << ", " << perf.iterations << " iterations, true relative"
+                << " residual " << rel << "): "
+                << (
+                       descent ? "correction taken (a descent direction)"
+                     : chord ? "no descent direction, new Jacobian"
+                     : "no descent direction, the Newton solve fails"
+                   )
+                << endl;
+            if (!descent && chord)
+            {
+                chord = false;
+                return step(sys, x, R, linTol, it, chord, lastKrylov, dx, res);
+            }
+            if (!descent)
+            {
+                res.reason =
+                    "the linear solve failed: " + perf.reason
+                  + ", true relative residual |b - M dx|/|b| = "
+                  + Foam::name(rel) + " (not below 1: no descent direction)";
+                return false;
+            }
         }
         return true;
     }
@@ -348,7 +380,7 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
         // iterative linear solver, whose correction differs from
         // Newton's by its tolerance already (a direct solver's steps stay
         // exact Newton steps)
-        const bool chord =
+        bool chord =
             finalChordStep_ && !jacobianFree_ && haveJacobian && !chordTaken
          && sys.inexactJacobianSolve()
          && res.forceResidual <= forceTol_
