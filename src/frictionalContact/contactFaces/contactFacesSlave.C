@@ -135,7 +135,7 @@ void Foam::contactFaces::slaveFaceTangent
 
     // [C4] area da = |a|, a = J F^-T . S0
     const tensor FinvT(inv(F).T());
-    const vector a(det(F)*(FinvT & S0));
+    const vector a(currentAreaVector(F, S0));
     const scalar area = mag(a);
     const tensor dAreadF(area*FinvT - a*(inv(F) & (a/area)));
 

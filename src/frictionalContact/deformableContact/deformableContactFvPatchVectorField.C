@@ -277,8 +277,7 @@ void Foam::deformableContactFvPatchVectorField::faceGeometry
             v[k] = x + (s.F[i] & (Xv[k] - s.X[i]));
         }
     }
-    // [C4] Nanson
-    const vector A(det(s.F[i])*(inv(s.F[i]).T() & s.S0[i]));
+    const vector A(currentAreaVector(s.F[i], s.S0[i]));
     s.area[i] = mag(A);
     s.n[i] = A/max(s.area[i], VSMALL);
 }

@@ -58,20 +58,14 @@ Foam::label Foam::deformableContactFvPatchVectorField::predictorCorrection
     List<slaveFace> converged;
     evaluatePair(slOld, msOld, k.deltaT, converged);
 
+    // n: the master's normal, into the slave body
     label nCorrected = 0;
     forAll(dD, i)
     {
         const slaveFace& o = converged[i];
         const slaveFace& p = predicted[i];
-        if
-        (
-            o.inReach && p.inReach
-         && smoothedPenetration(-o.gap) > 0
-         && p.gap > o.gap
-        )
+        if (o.inReach && p.inReach && keepContact(o.gap, p.gap, p.n, dD[i]))
         {
-            // n: the master's normal, into the slave body
-            dD[i] = (o.gap - p.gap)*p.n;
             ++nCorrected;
         }
     }

@@ -106,10 +106,9 @@ Foam::label Foam::frictionalContactFvPatchVectorField::predictorCorrection
         if
         (
             surface_->nearestQuery(i, k.Cf0[i] + k.D[i], k.time, k.Sf0[i], cp)
-         && cp.gap > cpOld.gap
+         && keepContact(cpOld.gap, cp.gap, cp.n, dD[i])
         )
         {
-            dD[i] = (cpOld.gap - cp.gap)*cp.n;
             ++nCorrected;
         }
     }
