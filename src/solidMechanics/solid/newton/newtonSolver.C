@@ -283,10 +283,10 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
     // [S16b] was the initial guess extrapolated (a predictor)?
     bool predicted = rejectPredictor_ && gMaxNorm(x - xStart) > 0;
 
-    // The last two corrections' sizes and whether they were full steps,
-    // for the error estimate of the displacement test
-    scalar dxPrev = -1;
-    scalar dxCur = -1;
+    // The last two corrections' sizes (0: none yet) and whether they were
+    // full steps, for the displacement test and its error estimate
+    scalar dxPrev = 0;
+    scalar dxCur = 0;
     bool fullPrev = false;
     bool firstSolve = true;
     bool fullLast = false;
@@ -308,13 +308,12 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
 
         const scalar increment =
             max(gMaxNorm(x - xStart), 1e-6*sys.typicalDisplacement());
-        const scalar dxLast = it > 0 ? gMaxNorm(dx) : 0;
-        res.displacementResidual = dxLast/increment;
-        if (estimateError_ && fullLast && fullPrev && dxLast < dxPrev)
+        res.displacementResidual = dxCur/increment;
+        if (estimateError_ && fullLast && fullPrev && dxCur < dxPrev)
         {
             // [S16b] the error of this iterate from the observed
             // contraction theta: |x - x*| <= theta/(1 - theta) |dx|
-            const scalar theta = dxLast/dxPrev;
+            const scalar theta = dxCur/dxPrev;
             res.displacementResidual *= min(1, theta/(1 - theta));
         }
 
@@ -466,7 +465,7 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
             itBest = it + 1;
             dx.setZero();
             haveJacobian = chordTaken = false;
-            dxPrev = dxCur = -1;
+            dxPrev = dxCur = 0;
             fullPrev = fullLast = false;
             firstSolve = true;
             lastKrylov = -1;
