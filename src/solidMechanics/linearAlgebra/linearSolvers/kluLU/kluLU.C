@@ -42,6 +42,15 @@ bool Foam::linearSolvers::kluLU::factorise()
     );
     refactored_ = false;
     factorsCurrent_ = numeric_ && common_.status == KLU_OK;
+    if (debug && factorsCurrent_)
+    {
+        // the fill decides the cost of every (re)factorisation
+        Info<< "        klu: " << colStart_.size() - 1 << " unknowns, "
+            << colStart_.back() << " entries, factors L "
+            << numeric_->lnz << " U " << numeric_->unz << ", "
+            << common_.flops << " flops, " << symbolic_->nblocks
+            << " diagonal blocks" << endl;
+    }
     return factorsCurrent_;
 }
 
