@@ -96,6 +96,7 @@ Foam::linearSolvers::petscSolver::petscSolver
     maxIterations_(500),
     view_(false),
     rigidBodyModes_(true),
+    shiftZeroPivots_(false),
     shifted_(false),
     reuse_(false),
     refreshIterations_(30),
@@ -240,7 +241,11 @@ bool Foam::linearSolvers::petscSolver::update()
 
 bool Foam::linearSolvers::petscSolver::shiftZeroPivots()
 {
-    if (shifted_ || pcName_ != "gamg" || matrix_.nComponents() != 3)
+    if
+    (
+        !shiftZeroPivots_ || shifted_ || pcName_ != "gamg"
+     || matrix_.nComponents() != 3
+    )
     {
         return false;
     }

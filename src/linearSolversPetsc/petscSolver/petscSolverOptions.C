@@ -38,7 +38,7 @@ void Foam::linearSolvers::petscSolver::readKeywords()
     static const wordHashSet keywords
     {
         "type", "ksp", "preconditioner", "maxIterations", "view", "prefix",
-        "options", "directCellLimit", "nearNullSpace",
+        "options", "directCellLimit", "nearNullSpace", "shiftZeroPivots",
         "reusePreconditioner", "refreshIterations"
     };
     static const wordList ksps{"gmres", "fgmres", "cg", "bcgs", "preonly"};
@@ -106,6 +106,15 @@ void Foam::linearSolvers::petscSolver::readKeywords()
             << exit(FatalIOError);
     }
     rigidBodyModes_ = nullSpace == "rigidBodyModes";
+
+    // Off by default: after a failed set-up with the modes, SOR's shift of
+    // the zero pivots keeps the modes instead of the translations. On the
+    // 3-D ring at 101 520 cells on 2 processors (a set-up that fails with
+    // the modes) it cost 16 % more Krylov iterations and 75 % more set-up
+    // than the translations (23.9 against 19.0 s per load step), on the
+    // two spheres the modes saved 5-15 % of the iterations
+    // (doc/performance.md section 15)
+    shiftZeroPivots_ = dict_.lookupOrDefault<bool>("shiftZeroPivots", false);
 
     // Off by default: on the 3-D ring it saved 11 % of the CPU at 31 000
     // cells (GAMG's set-up is cheap next to its solves) but raised the
