@@ -168,6 +168,11 @@ bool Foam::linearSolvers::petscSolver::update()
     petscSession::fpeGuard guard;
 
     check(A_.assemble(), "assembling the matrix");
+    if (nModes_ < 0 && !aggregationMultigrid())
+    {
+        // ILU, Jacobi, MUMPS, BoomerAMG: no near-null space to set or log
+        nModes_ = 0;
+    }
     if (nModes_ < 0)
     {
         if (rigidBodyModes_)
@@ -281,14 +286,16 @@ bool Foam::linearSolvers::petscSolver::shiftZeroPivots()
 }
 
 
+bool Foam::linearSolvers::petscSolver::aggregationMultigrid() const
+{
+    // Only the smoothed-aggregation multigrids build on a near-null space
+    return pcName_ == "gamg" || pcName_ == "ml";
+}
+
+
 bool Foam::linearSolvers::petscSolver::useTranslations()
 {
-    // Only the smoothed-aggregation multigrids build on the modes
-    if
-    (
-        !rigidBodyModes_ || nModes_ <= 0
-     || (pcName_ != "gamg" && pcName_ != "ml")
-    )
+    if (!rigidBodyModes_ || nModes_ <= 0 || !aggregationMultigrid())
     {
         return false;
     }
