@@ -168,9 +168,10 @@ bool Foam::linearSolvers::petscSolver::update()
     petscSession::fpeGuard guard;
 
     check(A_.assemble(), "assembling the matrix");
-    if (nModes_ < 0 && !aggregationMultigrid())
+    if (nModes_ < 0 && !aggregationMultigrid() && pcName_ != "boomerAMG")
     {
-        // ILU, Jacobi, MUMPS, BoomerAMG: no near-null space to set or log
+        // ILU, Jacobi, MUMPS: no near-null space to set or log (BoomerAMG
+        // keeps it: its vector interpolation, an option, uses it)
         nModes_ = 0;
     }
     if (nModes_ < 0)
