@@ -168,37 +168,14 @@ bool Foam::linearSolvers::petscSolver::update()
     petscSession::fpeGuard guard;
 
     check(A_.assemble(), "assembling the matrix");
-    if (nModes_ < 0 && !aggregationMultigrid() && pcName_ != "boomerAMG")
+    if (nModes_ < 0)
     {
         // ILU, Jacobi, MUMPS: no near-null space to set or log (BoomerAMG
         // keeps it: its vector interpolation, an option, uses it)
         nModes_ = 0;
-    }
-    if (nModes_ < 0)
-    {
-        if (rigidBodyModes_)
+        if (aggregationMultigrid() || pcName_ == "boomerAMG")
         {
-            check
-            (
-                A_.setRigidBodyModes(nModes_),
-                "building the rigid-body modes"
-            );
-        }
-        else
-        {
-            nModes_ = 0;
-        }
-        Info<< "Linear solver petsc: near-null space: ";
-        if (nModes_ > 0)
-        {
-            Info<< nModes_ << " rigid-body modes of the cell centres" << endl;
-        }
-        else
-        {
-            Info<< "the " << matrix_.nComponents() << " translations of the"
-                << " block size"
-                << (rigidBodyModes_ ? " (no cell coordinates given)" : "")
-                << endl;
+            setNearNullSpace();
         }
     }
 
@@ -229,6 +206,12 @@ bool Foam::linearSolvers::petscSolver::update()
         return true;
     }
     reused_ = false;
+    return setUpFallingBack();
+}
+
+
+bool Foam::linearSolvers::petscSolver::setUpFallingBack()
+{
     while (!setUpPreconditioner())
     {
         if (!useTranslations())
@@ -242,6 +225,31 @@ bool Foam::linearSolvers::petscSolver::update()
         );
     }
     return true;
+}
+
+
+void Foam::linearSolvers::petscSolver::setNearNullSpace()
+{
+    if (rigidBodyModes_)
+    {
+        check
+        (
+            A_.setRigidBodyModes(nModes_),
+            "building the rigid-body modes"
+        );
+    }
+    Info<< "Linear solver petsc: near-null space: ";
+    if (nModes_ > 0)
+    {
+        Info<< nModes_ << " rigid-body modes of the cell centres" << endl;
+    }
+    else
+    {
+        Info<< "the " << matrix_.nComponents() << " translations of the"
+            << " block size"
+            << (rigidBodyModes_ ? " (no cell coordinates given)" : "")
+            << endl;
+    }
 }
 
 
@@ -479,20 +487,11 @@ Foam::linearSolver::performance Foam::linearSolvers::petscSolver::solve
             KSPSetOperators(ksp_, A_.mat(), A_.mat()),
             "setting the operator"
         );
-        while (!setUpPreconditioner())
+        if (!setUpFallingBack())
         {
-            if (!useTranslations())
-            {
-                p = performance();
-                p.reason =
-                    "the preconditioner set-up failed: " + setUpFailure_;
-                return p;
-            }
-            check
-            (
-                KSPSetOperators(ksp_, A_.mat(), A_.mat()),
-                "setting the operator"
-            );
+            p = performance();
+            p.reason = "the preconditioner set-up failed: " + setUpFailure_;
+            return p;
         }
         check(A_.toPetsc(x0, xp), "copying the initial guess");
         p = krylovSolve(bp, xp, relTol);
