@@ -20,6 +20,24 @@ Foam::scalar Foam::rigidContactSurface::cellDepth
 }
 
 
+bool Foam::rigidContactSurface::nearest
+(
+    const label i,
+    const point& x,
+    const scalar t,
+    const vector& S0,
+    obstaclePoint& cp,
+    obstacleSearch& record
+) const
+{
+    return obstacle_->nearest
+    (
+        x, t, searchDistance_, searchRefreshFraction_*cellDepth(i, S0), cp,
+        record
+    );
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::rigidContactSurface::rigidContactSurface
@@ -107,14 +125,7 @@ bool Foam::rigidContactSurface::masterPointOf
     const solidPatchKinematics& k = *k_;
     mp = masterPoint();
     obstaclePoint cp;
-    if
-    (
-       !obstacle_->nearest
-        (
-            k.Cf0[i] + k.D[i], k.time, searchDistance_,
-            searchRefreshFraction_*cellDepth(i, k.Sf0[i]), cp, search_[i]
-        )
-    )
+    if (!nearest(i, k.Cf0[i] + k.D[i], k.time, k.Sf0[i], cp, search_[i]))
     {
         return false;
     }
@@ -150,11 +161,7 @@ bool Foam::rigidContactSurface::nearestQuery
 ) const
 {
     obstacleSearch record(search_[i]);
-    return obstacle_->nearest
-    (
-        x, t, searchDistance_, searchRefreshFraction_*cellDepth(i, S0), cp,
-        record
-    );
+    return nearest(i, x, t, S0, cp, record);
 }
 
 

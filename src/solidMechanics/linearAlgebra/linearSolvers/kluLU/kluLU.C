@@ -55,23 +55,6 @@ bool Foam::linearSolvers::kluLU::factorise()
 }
 
 
-void Foam::linearSolvers::kluLU::multiply
-(
-    const Eigen::VectorXd& x,
-    Eigen::VectorXd& y
-) const
-{
-    y.setZero(x.size());
-    for (label c = 0; c + 1 < label(colStart_.size()); ++c)
-    {
-        for (int k = colStart_[c]; k < colStart_[c + 1]; ++k)
-        {
-            y(rowIndex_[k]) += values_[k]*x(c);
-        }
-    }
-}
-
-
 Foam::scalar Foam::linearSolvers::kluLU::solveFactors
 (
     const Eigen::VectorXd& b,
@@ -80,8 +63,9 @@ Foam::scalar Foam::linearSolvers::kluLU::solveFactors
 {
     x = b;
     klu_solve(symbolic_, numeric_, x.size(), 1, x.data(), &common_);
+    // the residual of the matrix the columns were gathered from
     Eigen::VectorXd Ax;
-    multiply(x, Ax);
+    matrix_.multiply(x, Ax);
     const scalar normB = b.norm();
     return normB > 0 ? scalar((b - Ax).norm()/normB) : scalar(0);
 }
