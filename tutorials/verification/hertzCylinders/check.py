@@ -13,9 +13,9 @@
 # p^2 = p0^2 (1 - x^2/a^2) over the faces in contact but the outermost.
 # The master faces' pressure is fitted alike and reported, and each
 # surface's scatter about its fitted profile (root mean square over the
-# fitted faces, over p0): the finer surface's face pressures scatter, the
-# coarser surface's (here the master's) follow the profile (doc/theory.md
-# [C10b]).
+# fitted faces, over p0): the slave's faces scatter when its partner
+# deforms, the more so the more compliant the master and the finer the
+# slave (doc/theory.md [C10b]).
 import math
 import os
 import sys

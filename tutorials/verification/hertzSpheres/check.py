@@ -17,8 +17,9 @@
 # linear theory is posed ([V4]). The slave is the patch that carries the
 # frictionLaw in 0/D (either sphere's). Also the scatter of each surface's
 # face pressures about its fitted profile (root mean square over the fitted
-# faces, over p0): the faces of the finer surface scatter, those of the
-# coarser follow the profile (doc/theory.md [C10b]).
+# faces, over p0): the slave's faces scatter when its partner deforms,
+# the more so the more compliant the master and the finer the slave
+# (doc/theory.md [C10b]).
 # License: GPL-3.0-or-later
 import math
 import os
