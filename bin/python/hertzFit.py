@@ -24,13 +24,14 @@ def fitHertz(points):
 
 
 def sphereContact(case, patch, R, Estar):
-    """The last step's contact force P of a quarter model (4 times the z
-    component in postProcessing/contact/<patch>.dat), its largest
-    penetration and Hertz's a and p0 for a sphere of radius R and modulus
-    E* ([V9], [V12])"""
+    """The last step's contact force P of a quarter model (4 times the
+    magnitude of the z component in postProcessing/contact/<patch>.dat),
+    its largest penetration and Hertz's a and p0 for a sphere of radius R
+    and modulus E* ([V9], [V12])"""
     import os
     rows = [r.split() for r in open(os.path.join(
         case, "postProcessing", "contact", patch + ".dat")) if r[0] != "#"]
-    P = 4*float(rows[-1][3])
+    # the force on the patch: downward on the lower body's surface
+    P = 4*abs(float(rows[-1][3]))
     a = (3*P*R/(4*Estar))**(1.0/3.0)
     return P, float(rows[-1][8]), a, 3*P/(2*math.pi*a*a)

@@ -11,6 +11,11 @@
 # per reference area (nominalContactPressure, [C4]) of the slave faces at
 # their undeformed centres (the linear theory's frame), fitted by
 # p^2 = p0^2 (1 - x^2/a^2) over the faces in contact but the outermost.
+# The master faces' pressure is fitted alike and reported, and each
+# surface's scatter about its fitted profile (root mean square over the
+# fitted faces, over p0): the slave's faces scatter when its partner
+# deforms, the more so the more compliant the master and the finer the
+# slave (doc/theory.md [C10b]).
 import math
 import os
 import sys
@@ -42,11 +47,23 @@ aH = math.sqrt(4*P*Rstar/(math.pi*Estar))
 p0H = 2*P/(math.pi*aH)
 
 time = foamio.latestTime(case)
-p = foamio.readPatchField(os.path.join(case, time, "nominalContactPressure"),
-                          slave)
-C = foamio.readPatchField(os.path.join(case, "0", "C"), slave)
-pts = sorted((c[0], pi) for c, pi in zip(C, p) if pi > 0)
-p0, a = hertzFit.fitHertz(pts)
+
+
+def fitSurface(patch):
+    p = foamio.readPatchField(
+        os.path.join(case, time, "nominalContactPressure"), patch)
+    C = foamio.readPatchField(os.path.join(case, "0", "C"), patch)
+    pts = sorted((c[0], pi) for c, pi in zip(C, p) if pi > 0)
+    p0, a = hertzFit.fitHertz(pts)
+    fit = pts[:-1]
+    scatter = math.sqrt(sum(
+        (pp - p0*math.sqrt(max(1 - x*x/(a*a), 0)))**2 for x, pp in fit)
+        / len(fit))/p0
+    return p0, a, pts, scatter
+
+
+p0, a, pts, scatter = fitSurface(slave)
+p0m, am, ptsM, scatterM = fitSurface(master)
 
 fs = [s[1] + s[4], s[2] + s[5]]
 fm = [m[1] + m[4], m[2] + m[5]]
@@ -54,16 +71,23 @@ res = {
     "contactForcePerLength": P,
     "peakPressureRelError": abs(p0 - p0H)/p0H,
     "halfWidthRelError": abs(a - aH)/aH,
+    "masterPeakPressureRelError": abs(p0m - p0H)/p0H,
+    "masterHalfWidthRelError": abs(am - aH)/aH,
+    "peakPressureScatter": scatter,
+    "masterPeakPressureScatter": scatterM,
     "penetrationOverHalfWidth": s[8]/aH,
     "facesInContact": len(pts),
     "momentumRelError": math.hypot(fs[0] + fm[0], fs[1] + fm[1])/math.hypot(*fs),
 }
 print("hertzCylinders: P = %.4g N/m; Hertz (R* = %.3f mm, E* = %.4g Pa) "
       "a = %.4f mm, p0 = %.4g Pa; computed a = %.4f mm (%.2f %%), p0 = %.4g Pa"
-      " (%.2f %%); %d faces in contact; penetration %.2e of a; slave + master"
-      " force %.1e of the force"
+      " (%.2f %%); %d faces in contact, scatter %.2f %% of p0; master surface"
+      " a %.2f %%, p0 %.2f %% off (%d faces), scatter %.2f %%; penetration"
+      " %.2e of a; slave + master force %.1e of the force"
       % (P, Rstar*1e3, Estar, aH*1e3, p0H, a*1e3,
          100*res["halfWidthRelError"], p0, 100*res["peakPressureRelError"],
-         len(pts), res["penetrationOverHalfWidth"], res["momentumRelError"]))
+         len(pts), 100*scatter, 100*res["masterHalfWidthRelError"],
+         100*res["masterPeakPressureRelError"], len(ptsM), 100*scatterM,
+         res["penetrationOverHalfWidth"], res["momentumRelError"]))
 foamio.writeResults(os.path.join(case, "results.dat"), res,
                     "Hertz contact of two cylinders")

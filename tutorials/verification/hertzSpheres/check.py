@@ -14,7 +14,12 @@
 # as in tutorials/verification/hertzSphere; the master surface's pressure
 # is fitted alike and reported. Pressure per reference area
 # (nominalContactPressure, [C4]) at the undeformed face centres, where the
-# linear theory is posed ([V4]).
+# linear theory is posed ([V4]). The slave is the patch that carries the
+# frictionLaw in 0/D (either sphere's). Also the scatter of each surface's
+# face pressures about its fitted profile (root mean square over the fitted
+# faces, over p0): the slave's faces scatter when its partner deforms,
+# the more so the more compliant the master and the finer the slave
+# (doc/theory.md [C10b]).
 # License: GPL-3.0-or-later
 import math
 import os
@@ -39,7 +44,19 @@ Rstar = 1/(1/R1 + 1/R2)
 Estar = 1/((1 - nu1*nu1)/E1 + (1 - nu2*nu2)/E2)
 h = param("contactZone")/param("nContact")
 
-P, pen, aH, p0H = hertzFit.sphereContact(case, "upperSurface", Rstar, Estar)
+# the slave: the patch of the pair whose entry in 0/D names a frictionLaw
+D0 = open(os.path.join(case, "0", "D")).read()
+
+
+def carriesLaw(patch):
+    m = re.search(r"\n\s*%s\s*\{([^}]*)" % patch, D0)
+    return m is not None and "frictionLaw" in m.group(1)
+
+
+slave, master = (("lowerSurface", "upperSurface")
+                 if carriesLaw("lowerSurface") else
+                 ("upperSurface", "lowerSurface"))
+P, pen, aH, p0H = hertzFit.sphereContact(case, slave, Rstar, Estar)
 
 time = foamio.latestTime(case)
 
@@ -53,30 +70,36 @@ def fitSurface(patch):
     rMax = max(r for r, _ in inContact)
     fit = [(r, pp) for r, pp in inContact if r < rMax - h]
     p0, a = hertzFit.fitProfile(fit)
-    return p0, a, len(inContact), len(fit)
+    scatter = math.sqrt(sum(
+        (pp - p0*math.sqrt(max(1 - r*r/(a*a), 0)))**2 for r, pp in fit)
+        / len(fit))/p0
+    return p0, a, len(inContact), len(fit), scatter
 
 
-p0, a, nIn, nFit = fitSurface("upperSurface")
-p0m, am, nInM, _ = fitSurface("lowerSurface")
+p0, a, nIn, nFit, scatter = fitSurface(slave)
+p0m, am, nInM, _, scatterM = fitSurface(master)
 res = {
     "contactForce": P,
     "peakPressureRelError": abs(p0 - p0H)/p0H,
     "contactRadiusRelError": abs(a - aH)/aH,
     "masterPeakPressureRelError": abs(p0m - p0H)/p0H,
     "masterContactRadiusRelError": abs(am - aH)/aH,
+    "peakPressureScatter": scatter,
+    "masterPeakPressureScatter": scatterM,
     "penetrationOverContactRadius": pen/aH,
     "facesInContact": nIn,
     "masterFacesInContact": nInM,
     "facesFitted": nFit,
 }
 print("hertzSpheres: P = %.4g N; Hertz a = %.4f mm, p0 = %.4g Pa; slave "
-      "surface a = %.4f mm (%.2f %%), p0 = %.4g Pa (%.2f %%), %d faces in "
-      "contact (quarter), %d fitted; master surface a %.2f %%, p0 %.2f %% "
-      "off (%d faces); penetration %.2e of a"
-      % (P, aH*1e3, p0H, a*1e3, 100*res["contactRadiusRelError"], p0,
-         100*res["peakPressureRelError"], nIn, nFit,
+      "surface (%s) a = %.4f mm (%.2f %%), p0 = %.4g Pa (%.2f %%), %d faces "
+      "in contact (quarter), %d fitted, scatter %.2f %% of p0; master "
+      "surface a %.2f %%, p0 %.2f %% off (%d faces), scatter %.2f %%; "
+      "penetration %.2e of a"
+      % (P, aH*1e3, p0H, slave, a*1e3, 100*res["contactRadiusRelError"], p0,
+         100*res["peakPressureRelError"], nIn, nFit, 100*scatter,
          100*res["masterContactRadiusRelError"],
-         100*res["masterPeakPressureRelError"], nInM,
+         100*res["masterPeakPressureRelError"], nInM, 100*scatterM,
          res["penetrationOverContactRadius"]))
 foamio.writeResults(os.path.join(case, "results.dat"), res,
                     "Hertz contact of two spheres")
