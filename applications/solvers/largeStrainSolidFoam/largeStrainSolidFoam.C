@@ -124,6 +124,23 @@ int main(int argc, char *argv[])
             solid.beginStep(x, xStart, controller.predict());
             res = nonlinearSolver.solve(solid, x, xStart, retry);
             nNewton += res.newtonIterations;
+
+            // [C5b] augmented Lagrangian contact: the converged step is
+            // solved again, from where it stands, with the contacts'
+            // updated multipliers until their penetrations are below
+            // their tolerances (no contact augmented: no re-solve)
+            for (label aug = 1; res.converged && solid.augment(x); ++aug)
+            {
+                const label krylov = res.krylovIterations;
+                const label evaluations = res.residualEvaluations;
+                res = nonlinearSolver.solve(solid, x, xStart, retry);
+                nNewton += res.newtonIterations;
+                res.krylovIterations += krylov;
+                res.residualEvaluations += evaluations;
+                Info<< "    augmentation " << aug << ": "
+                    << res.newtonIterations << " Newton iterations"
+                    << (res.converged ? "" : ", not converged") << endl;
+            }
             action =
                 res.converged
               ? controller.converged()
