@@ -124,6 +124,40 @@ int main(int argc, char *argv[])
             solid.beginStep(x, xStart, controller.predict());
             res = nonlinearSolver.solve(solid, x, xStart, retry);
             nNewton += res.newtonIterations;
+
+            // [C5b] augmented Lagrangian contact: the converged step is
+            // solved again, from where it stands, with the contacts'
+            // updated multipliers until their penetrations are below their
+            // tolerances (no contact augmented: no re-solve). A solve
+            // after an update is followed by another check and most likely
+            // another update, so it stops at looser tolerances (1000
+            // times the controls'); when the multipliers have converged
+            // at such an iterate, a last solve to the controls' tolerances
+            // (and another check) follows
+            bool loose = false;
+            for (label aug = 1; res.converged; ++aug)
+            {
+                const bool update = solid.augment(x);
+                if (!update && !loose)
+                {
+                    break;
+                }
+                loose = update;
+                const label krylov = res.krylovIterations;
+                const label evaluations = res.residualEvaluations;
+                res = nonlinearSolver.solve
+                (
+                    solid, x, xStart, retry, loose ? 1e3 : 1
+                );
+                nNewton += res.newtonIterations;
+                res.krylovIterations += krylov;
+                res.residualEvaluations += evaluations;
+                Info<< "    augmentation " << aug << ": "
+                    << res.newtonIterations << " Newton iterations"
+                    << (loose ? " (loose tolerances)" : " (final solve)")
+                    << (res.converged ? "" : ", not converged") << endl;
+            }
+
             action =
                 res.converged
               ? controller.converged()

@@ -88,6 +88,33 @@ void Foam::contactFaces::readState
     {
         dissipation_ = scalarField("dissipatedEnergy", dict, n);
     }
+    // [C5b] the multipliers the next step starts from
+    if (dict.found("normalMultiplier"))
+    {
+        committedMultiplier_ = scalarField("normalMultiplier", dict, n);
+    }
+    multiplier_ = committedMultiplier_;
+}
+
+
+void Foam::contactFaces::readAugmentation(const dictionary& dict)
+{
+    augmented_ = dict.found("augmentedLagrangian");
+    if (!augmented_)
+    {
+        return;
+    }
+    const dictionary& a = dict.subDict("augmentedLagrangian");
+    augmentTolerance_ = a.get<scalar>("tolerance");
+    augmentMaxIterations_ = a.lookupOrDefault<label>("maxIterations", 10);
+    if (!(augmentTolerance_ > 0) || augmentMaxIterations_ < 1)
+    {
+        FatalIOErrorInFunction(a)
+            << "Keywords 'tolerance' (a penetration [m]) and 'maxIterations'"
+            << " in dictionary " << a.name() << " must be > 0 and >= 1, got "
+            << augmentTolerance_ << " and " << augmentMaxIterations_ << nl
+            << exit(FatalIOError);
+    }
 }
 
 
@@ -113,6 +140,7 @@ void Foam::contactFaces::sampleSensitivity(const frictionResult& res)
 void Foam::contactFaces::readContactFaces(const dictionary& dict)
 {
     lawDict_ = dict.subDict("frictionLaw");
+    readAugmentation(dict);
     penaltyScale_ = dict.lookupOrDefault<scalar>("penaltyScale", 100);
     tangentialPenaltyScale_ =
         dict.lookupOrDefault<scalar>("tangentialPenaltyScale", 0.1);
@@ -188,6 +216,12 @@ void Foam::contactFaces::copyContactFaces(const contactFaces& ptf)
     nSlip_ = ptf.nSlip_;
     sensitivity_ = ptf.sensitivity_;
     illPosedWarned_ = ptf.illPosedWarned_;
+    augmented_ = ptf.augmented_;
+    augmentTolerance_ = ptf.augmentTolerance_;
+    augmentMaxIterations_ = ptf.augmentMaxIterations_;
+    committedMultiplier_ = ptf.committedMultiplier_;
+    multiplier_ = ptf.multiplier_;
+    nAugmentations_ = ptf.nAugmentations_;
     linearised_ = false;
 }
 
@@ -200,6 +234,8 @@ void Foam::contactFaces::resizeFaces(const label n)
     frictionTraction_.setSize(n, Zero);
     penetration_.setSize(n, 0);
     dissipation_.setSize(n, 0);
+    committedMultiplier_.setSize(n, 0);
+    multiplier_.setSize(n, 0);
 }
 
 
@@ -220,6 +256,8 @@ void Foam::contactFaces::copyFace
     frictionTraction_[to] = ptf.frictionTraction_[from];
     penetration_[to] = ptf.penetration_[from];
     dissipation_[to] = ptf.dissipation_[from];
+    committedMultiplier_[to] = ptf.committedMultiplier_[from];
+    multiplier_[to] = ptf.multiplier_[from];
 }
 
 
@@ -256,6 +294,10 @@ Foam::contactFaces::contactFaces()
     nContact_(0),
     nSlip_(0),
     illPosedWarned_(false),
+    augmented_(false),
+    augmentTolerance_(0),
+    augmentMaxIterations_(0),
+    nAugmentations_(0),
     linearised_(false)
 {}
 
@@ -313,6 +355,67 @@ void Foam::contactFaces::faceUpdate
     {
         law().update(state_[i], in, res);
     }
+}
+
+
+void Foam::contactFaces::resetMultipliers()
+{
+    multiplier_ = committedMultiplier_;
+    nAugmentations_ = 0;
+}
+
+
+bool Foam::contactFaces::augmentSlaveFaces(const List<slaveFace>& faces)
+{
+    if (!augmented_)
+    {
+        return false;
+    }
+
+    // [C5b] the update lambda <- tN moves each multiplier by KN times the
+    // face's constraint violation (its penetration, or the opening of a
+    // face that still carries its multiplier): converged when that is
+    // below the tolerance everywhere
+    const scalar KN = law().KN();
+    scalar change = 0;
+    scalar penetration = 0;
+    scalarField next(faces.size(), 0);
+    forAll(faces, i)
+    {
+        const slaveFace& sf = faces[i];
+        if (sf.inReach)
+        {
+            next[i] = sf.result.tN;
+            if (sf.result.tN > 0)
+            {
+                penetration = max(penetration, -sf.gap);
+            }
+        }
+        change = max(change, mag(next[i] - multiplier_[i])/KN);
+    }
+    reduce(change, maxOp<scalar>());
+    reduce(penetration, maxOp<scalar>());
+
+    const bool done =
+        change <= augmentTolerance_
+     || nAugmentations_ >= augmentMaxIterations_;
+    Info<< "    contact " << contactPatch().name() << ": augmentation "
+        << nAugmentations_ << ", largest penetration " << penetration
+        << " m, multiplier change " << change << " m (tolerance "
+        << augmentTolerance_ << " m)"
+        << (
+               change <= augmentTolerance_ ? ": converged"
+             : done ? ": maxIterations reached, not converged"
+             : ": update, re-solve"
+           )
+        << endl;
+    if (done)
+    {
+        return false;
+    }
+    multiplier_ = next;
+    ++nAugmentations_;
+    return true;
 }
 
 

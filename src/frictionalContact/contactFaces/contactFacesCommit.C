@@ -161,6 +161,7 @@ void Foam::contactFaces::commitFace
     nominalContactPressure_[i] = res.tN*area/magS0;
     frictionTraction_[i] = -res.tT;
     penetration_[i] = max(-gap, scalar(0));
+    committedMultiplier_[i] = augmented_ ? res.tN : 0;
 
     normalForce_ += area*res.tN*n;
     frictionForce_ -= area*res.tT;
@@ -191,6 +192,7 @@ void Foam::contactFaces::commitOpenFace(const label i)
     nominalContactPressure_[i] = 0;
     frictionTraction_[i] = Zero;
     penetration_[i] = 0;
+    committedMultiplier_[i] = 0;
 }
 
 
@@ -233,6 +235,9 @@ void Foam::contactFaces::endCommit()
         maxPenetration_ = pens[iMax];
         maxPenetrationAt_ = where[iMax];
     }
+
+    // [C5b] the next step starts from this step's normal tractions
+    resetMultipliers();
 
     updateFields();
     writeIntegrals();
@@ -312,6 +317,14 @@ void Foam::contactFaces::writeFaces(Ostream& os) const
     // Face state for restart, as the law declares it
     layout_.write(os, state_);
     dissipation_.writeEntry("dissipatedEnergy", os);
+    if (augmented_)
+    {
+        os.beginBlock("augmentedLagrangian");
+        os.writeEntry("tolerance", augmentTolerance_);
+        os.writeEntry("maxIterations", augmentMaxIterations_);
+        os.endBlock();
+        committedMultiplier_.writeEntry("normalMultiplier", os);
+    }
 }
 
 

@@ -41,7 +41,7 @@ void Foam::contactFaces::evaluateSlaveFace
     // the master's material point(s) under it; [C2b] smoothed penetration
     const vector ds(dOwn - sf.motion);
     frictionInput& in = sf.input;
-    in.gN = smoothedPenetration(-sf.gap);
+    in.gN = smoothedPenetration(augmentedPenetration(i, sf.gap));
     in.gT = (tensor::I - sqr(sf.n)) & (state()[i].totalSlip + ds);
     in.n = sf.n;
     in.dt = dt;
@@ -94,7 +94,8 @@ void Foam::contactFaces::slaveFaceTangent
     const vector v(old.totalSlip + dOwn - mp.motion);
 
     frictionInput in;
-    in.gN = smoothedPenetration(-mp.gap);
+    const scalar pen = augmentedPenetration(i, mp.gap);
+    in.gN = smoothedPenetration(pen);
     in.gT = P & v;
     in.n = n;
     in.dt = dt;
@@ -102,7 +103,7 @@ void Foam::contactFaces::slaveFaceTangent
     law().update(old, in, res);
 
     // gN = smoothed(-gap) [C2b]; gT = (I - n n).v [C3]
-    const vector dgNdx(-smoothedPenetrationSlope(-mp.gap)*mp.dgapdx);
+    const vector dgNdx(-smoothedPenetrationSlope(pen)*mp.dgapdx);
     const tensor dvdx(tensor::I - mp.dmotiondx);
     const tensor dgTdx((P & dvdx) - (n & v)*N - n*(N.T() & v));
 

@@ -470,6 +470,37 @@ void Foam::deformableContactFvPatchVectorField::release()
 }
 
 
+bool Foam::deformableContactFvPatchVectorField::augment
+(
+    const solidPatchKinematics& k
+)
+{
+    // the slave carries the law and its multipliers; the master nothing
+    if (!slave_ || !augmented())
+    {
+        return false;
+    }
+    checkPair();
+    side sl;
+    side ms;
+    List<slaveFace> faces;
+    evaluate(sl, ms, faces, k.deltaT);
+    // the derivatives cached for this iterate hold the old multipliers
+    cache_ = tangentCache();
+    return augmentSlaveFaces(faces);
+}
+
+
+void Foam::deformableContactFvPatchVectorField::resetAugmentation()
+{
+    if (slave_)
+    {
+        resetMultipliers();
+        cache_ = tangentCache();
+    }
+}
+
+
 void Foam::deformableContactFvPatchVectorField::commit
 (
     const solidPatchKinematics& k

@@ -116,6 +116,27 @@ Foam::label Foam::frictionalContactFvPatchVectorField::predictorCorrection
 }
 
 
+bool Foam::frictionalContactFvPatchVectorField::augment
+(
+    const solidPatchKinematics& k
+)
+{
+    if (!augmented())
+    {
+        return false;
+    }
+    List<slaveFace> faces;
+    evaluate(k, faces);
+    return augmentSlaveFaces(faces);
+}
+
+
+void Foam::frictionalContactFvPatchVectorField::resetAugmentation()
+{
+    resetMultipliers();
+}
+
+
 void Foam::frictionalContactFvPatchVectorField::commit
 (
     const solidPatchKinematics& k

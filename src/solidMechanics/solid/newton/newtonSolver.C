@@ -254,9 +254,14 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
     nonlinearSystem& sys,
     Eigen::VectorXd& x,
     const Eigen::VectorXd& xStart,
-    const bool jacobianFree
+    const bool jacobianFree,
+    const scalar looser
 )
 {
+    // the tolerances of this solve (looser: [C5b]'s intermediate solves)
+    const scalar forceTol = looser*forceTol_;
+    const scalar displacementTol = looser*displacementTol_;
+
     result res;
     nResidualEvaluations_ = 0;
     jacobianFree_ =
@@ -326,8 +331,8 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
 
         if
         (
-            res.forceResidual <= forceTol_
-         && res.displacementResidual <= displacementTol_
+            res.forceResidual <= forceTol
+         && res.displacementResidual <= displacementTol
         )
         {
             res.converged = true;
@@ -368,7 +373,7 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
             const scalar ratio = normR/max(normRprev, VSMALL);
             eta = ratio < 0.9 ? min(0.1, max(0.9*sqr(ratio), 1e-4)) : 1e-4;
         }
-        const scalar linTol = max(eta*normR, 0.1*forceTol_*Fscale);
+        const scalar linTol = max(eta*normR, 0.1*forceTol*Fscale);
 
         // [S16b] the force test is met and only the displacement test is
         // left, in Newton's quadratic phase (the last correction below
@@ -382,8 +387,8 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
         bool chord =
             finalChordStep_ && !jacobianFree_ && haveJacobian && !chordTaken
          && sys.inexactJacobianSolve()
-         && res.forceResidual <= forceTol_
-         && res.displacementResidual <= Foam::sqrt(displacementTol_);
+         && res.forceResidual <= forceTol
+         && res.displacementResidual <= Foam::sqrt(displacementTol);
         if (!step(sys, x, R, linTol, it, chord, lastKrylov, dx, res))
         {
             break;

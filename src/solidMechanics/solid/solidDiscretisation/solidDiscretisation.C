@@ -601,6 +601,38 @@ void Foam::solidDiscretisation::holdLinearisation(const bool on)
 }
 
 
+bool Foam::solidDiscretisation::augmentForcePatches()
+{
+    bool again = false;
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (bcs_.kind(patchi) != solidBoundaries::FORCE)
+        {
+            continue;
+        }
+        const forceKinematics fk(*this, patchi, mesh_.time().deltaTValue());
+        // every patch (no short cut: the call is collective)
+        if (bcs_.forcePatch(patchi).augment(fk.k))
+        {
+            again = true;
+        }
+    }
+    return again;
+}
+
+
+void Foam::solidDiscretisation::resetAugmentation()
+{
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (bcs_.kind(patchi) == solidBoundaries::FORCE)
+        {
+            bcs_.forcePatch(patchi).resetAugmentation();
+        }
+    }
+}
+
+
 void Foam::solidDiscretisation::commit(const scalar dt)
 {
     // The trial state of the current iterate

@@ -234,6 +234,9 @@ void Foam::totalLagrangianSolid::beginStep
     pack(discretisation_.D0(), xStart);
     x = xStart;
 
+    // [C5b] every attempt starts from the last converged multipliers
+    discretisation_.resetAugmentation();
+
     if (predict)
     {
         const scalar ratio =
@@ -254,6 +257,15 @@ void Foam::totalLagrangianSolid::beginStep
             }
         }
     }
+}
+
+
+bool Foam::totalLagrangianSolid::augment(const Eigen::VectorXd& x)
+{
+    vectorField u(mesh_.nCells());
+    unpack(x, u);
+    discretisation_.setIterate(u);
+    return discretisation_.augmentForcePatches();
 }
 
 
