@@ -91,6 +91,10 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
     (
         dict.lookupOrDefault<scalar>("augmentForceFactor", 1e4)
     ),
+    augmentForcing_
+    (
+        dict.lookupOrDefault<scalar>("augmentForcingTerm", 1e-3)
+    ),
     gmres_(dict),
     nResidualEvaluations_(0),
     jacobianFree_(false)
@@ -119,6 +123,13 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
         FatalIOErrorInFunction(dict)
             << "Keyword 'initialForcingTerm' in dictionary " << dict.name()
             << " is " << initialForcing_ << "; expected a value in (0, 1)"
+            << nl << exit(FatalIOError);
+    }
+    if (!(augmentForcing_ > 0) || augmentForcing_ >= 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'augmentForcingTerm' in dictionary " << dict.name()
+            << " is " << augmentForcing_ << "; expected a value in (0, 1)"
             << nl << exit(FatalIOError);
     }
     if (!(augmentForceFactor_ >= 1))
@@ -420,7 +431,14 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
         // to reach the force tolerance; after a step that barely lowered
         // |R| (an active set changing) the tightest, since a loose solve
         // with an outdated preconditioner then misleads Newton further
-        if (firstSolve)
+        if (afterUpdate)
+        {
+            // [C5b] the update's correction is needed only to the
+            // accuracy of the next update (a fraction of it)
+            eta = augmentForcing_;
+            firstSolve = false;
+        }
+        else if (firstSolve)
         {
             eta = initialForcing_;
             firstSolve = false;
