@@ -125,7 +125,10 @@ int main(int argc, char *argv[])
             res = nonlinearSolver.solve(solid, x, xStart, retry);
             nNewton += res.newtonIterations;
 
-            // [C5b] augmented Lagrangian contact: the converged step is
+            // [C5b] augmented Lagrangian contact: the Newton solver
+            // updates the multipliers between its iterations and returns
+            // converged multipliers (augmentBetweenIterations, the
+            // default). Otherwise the converged step is
             // solved again, from where it stands, with the contacts'
             // updated multipliers until their penetrations are below their
             // tolerances (no contact augmented: no re-solve). A solve
@@ -135,7 +138,12 @@ int main(int argc, char *argv[])
             // at such an iterate, a last solve to the controls' tolerances
             // (and another check) follows
             bool loose = false;
-            for (label aug = 1; res.converged; ++aug)
+            for
+            (
+                label aug = 1;
+                res.converged && !res.multipliersConverged;
+                ++aug
+            )
             {
                 const bool update = solid.augment(x);
                 if (!update && !loose)

@@ -406,7 +406,7 @@ bool Foam::contactFaces::augmentSlaveFaces(const List<slaveFace>& faces)
         << (
                change <= augmentTolerance_ ? ": converged"
              : done ? ": maxIterations reached, not converged"
-             : ": update, re-solve"
+             : ": update"
            )
         << endl;
     if (done)

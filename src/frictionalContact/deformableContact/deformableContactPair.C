@@ -485,9 +485,13 @@ bool Foam::deformableContactFvPatchVectorField::augment
     side ms;
     List<slaveFace> faces;
     evaluate(sl, ms, faces, k.deltaT);
+    if (!augmentSlaveFaces(faces))
+    {
+        return false;
+    }
     // the derivatives cached for this iterate hold the old multipliers
     cache_ = tangentCache();
-    return augmentSlaveFaces(faces);
+    return true;
 }
 
 

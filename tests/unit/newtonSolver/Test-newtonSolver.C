@@ -32,7 +32,15 @@ Description
         true relative residual >= 1: the solve fails at once, naming the
         reason, x untouched; below 1 the correction is taken and Newton
         converges; a chord step's failed solve is redone with a new
-        Jacobian [S16c].
+        Jacobian [S16c];
+      - augmented Lagrangian contact ([C5b]): a spring pressed onto an
+        obstacle with a soft penalty Ka and a multiplier lambda,
+        R = 1 - x - max(lambda + Ka (x - g), 0): the multipliers updated
+        between the Newton iterations converge to the exact contact
+        (x = g, lambda = 1 - g) within the multiplier tolerance, in one
+        solve that reports them converged, each update absorbed by a
+        chord step (fewer Jacobians than iterations); with
+        augmentBetweenIterations no, the solve is the penalty's alone.
 
 \*---------------------------------------------------------------------------*/
 
@@ -53,7 +61,7 @@ class testSystem
 {
 public:
 
-    enum kindType { SPRINGS, ATAN, SINGULAR, NOISY, PENALTY };
+    enum kindType { SPRINGS, ATAN, SINGULAR, NOISY, PENALTY, AUGMENTED };
 
     //- PENALTY: spring 1, obstacle at g with stiffness Kp
     static constexpr scalar g = 1e-3;
@@ -76,6 +84,12 @@ public:
     scalar breakdownResidual = 0;
     bool chordOnly = false;
     label nSolvesSinceJacobian = 0;
+
+    //- AUGMENTED: soft penalty, multiplier, its tolerance [m], updates
+    static constexpr scalar Ka = 10;
+    scalar lambda = 0;
+    scalar multiplierTolerance = 1e-9;
+    label nUpdates = 0;
 
     explicit testSystem(const kindType k)
     :
@@ -117,6 +131,10 @@ public:
                 R.resize(1);
                 R(0) = 1 - x(0) - Kp*max(x(0) - g, 0);
                 break;
+            case AUGMENTED:
+                R.resize(1);
+                R(0) = 1 - x(0) - max(lambda + Ka*(x(0) - g), 0);
+                break;
         }
     }
 
@@ -148,6 +166,9 @@ public:
             case PENALTY:
                 M.setConstant(1, 1, 1 + (x(0) > g ? Kp : 0));
                 return true;
+            case AUGMENTED:
+                M.setConstant(1, 1, 1 + (lambda + Ka*(x(0) - g) > 0 ? Ka : 0));
+                return true;
         }
         return false;
     }
@@ -160,6 +181,25 @@ public:
     virtual bool inexactJacobianSolve() const
     {
         return inexact;
+    }
+
+    virtual bool augmentable() const
+    {
+        return kind == AUGMENTED;
+    }
+
+    //- Uzawa: lambda <- tN until it moves by less than the tolerance
+    //  times Ka
+    virtual bool augment(const Eigen::VectorXd& x)
+    {
+        const scalar tN = max(lambda + Ka*(x(0) - g), 0);
+        if (mag(tN - lambda)/Ka <= multiplierTolerance)
+        {
+            return false;
+        }
+        lambda = tN;
+        ++nUpdates;
+        return true;
     }
 
     virtual linearSolver::performance solveJacobian
@@ -567,6 +607,82 @@ int main()
         (
             "chord breakdown: a Jacobian per Newton iteration",
             sys3.jacobianResiduals.size(), res3.newtonIterations, 0
+        );
+    }
+
+    Info<< "Augmented Lagrangian: multipliers between the iterations" << endl;
+    {
+        // the penalty alone stops at x - g = (1 - g)/(1 + Ka) = 0.09; each
+        // update contracts the penetration by 1/(1 + Ka)
+        const char* tol =
+            "forceTolerance 1e-12; displacementTolerance 1e-10;"
+            " maxNewtonIterations 10;";
+        testSystem sys(testSystem::AUGMENTED);
+        Eigen::VectorXd x(Eigen::VectorXd::Zero(1)), x0(x);
+        const newtonSolver::result res =
+            newtonSolver(controls(tol)).solve(sys, x, x0);
+        Info<< "    converged " << res.converged << ", x - g "
+            << x(0) - testSystem::g << ", lambda " << sys.lambda << ", "
+            << res.newtonIterations << " iterations, " << res.augmentations
+            << " updates, " << sys.jacobianResiduals.size() << " Jacobians"
+            << endl;
+        checkTrue("augmented: converged", res.converged);
+        checkTrue
+        (
+            "augmented: multipliers reported converged",
+            res.multipliersConverged
+        );
+        // the last update's change was below 1e-9 m; the iterate follows
+        // it to the Newton tolerances
+        checkBelow
+        (
+            "augmented: |x - g| below the multiplier tolerance",
+            mag(x(0) - testSystem::g), sys.multiplierTolerance
+        );
+        checkAbs
+        (
+            "augmented: lambda = 1 - g",
+            sys.lambda, 1 - testSystem::g, 10*sys.multiplierTolerance
+        );
+        // 0.09 -> 1e-9 at 1/11 per update: 8 updates (the first at the
+        // penalty's answer); more iterations than maxNewtonIterations,
+        // since every update gives the solve as many more
+        checkAbs("augmented: updates", res.augmentations, 8, 1);
+        checkAbs
+        (
+            "augmented: updates counted alike",
+            res.augmentations, sys.nUpdates, 0
+        );
+        checkAbs
+        (
+            "augmented: a chord step absorbs each update",
+            sys.jacobianResiduals.size(),
+            res.newtonIterations - res.augmentations, 0
+        );
+
+        testSystem off(testSystem::AUGMENTED);
+        Eigen::VectorXd y(Eigen::VectorXd::Zero(1));
+        const newtonSolver::result resOff =
+            newtonSolver
+            (
+                controls
+                (
+                    "forceTolerance 1e-12; displacementTolerance 1e-10;"
+                    " augmentBetweenIterations no;"
+                )
+            ).solve(off, y, x0);
+        checkTrue("not augmented: converged", resOff.converged);
+        checkAbs("not augmented: no update", resOff.augmentations, 0, 0);
+        checkTrue
+        (
+            "not augmented: multipliers not reported converged",
+            !resOff.multipliersConverged
+        );
+        checkAbs
+        (
+            "not augmented: the penalty's answer (1 - g)/(1 + Ka)",
+            y(0) - testSystem::g, (1 - testSystem::g)/(1 + testSystem::Ka),
+            1e-10
         );
     }
 

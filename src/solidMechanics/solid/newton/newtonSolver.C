@@ -83,6 +83,18 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
         dict.lookupOrDefault<bool>("holdContactLinearisation", true)
     ),
     krylovRefresh_(dict.lookupOrDefault<label>("krylovRefresh", 15)),
+    augmentInside_
+    (
+        dict.lookupOrDefault<bool>("augmentBetweenIterations", true)
+    ),
+    augmentForceFactor_
+    (
+        dict.lookupOrDefault<scalar>("augmentForceFactor", 1e4)
+    ),
+    augmentForcing_
+    (
+        dict.lookupOrDefault<scalar>("augmentForcingTerm", 1e-3)
+    ),
     gmres_(dict),
     nResidualEvaluations_(0),
     jacobianFree_(false)
@@ -112,6 +124,21 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
             << "Keyword 'initialForcingTerm' in dictionary " << dict.name()
             << " is " << initialForcing_ << "; expected a value in (0, 1)"
             << nl << exit(FatalIOError);
+    }
+    if (!(augmentForcing_ > 0) || augmentForcing_ >= 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'augmentForcingTerm' in dictionary " << dict.name()
+            << " is " << augmentForcing_ << "; expected a value in (0, 1)"
+            << nl << exit(FatalIOError);
+    }
+    if (!(augmentForceFactor_ >= 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'augmentForceFactor' in dictionary " << dict.name()
+            << " is " << augmentForceFactor_ << "; expected a value >= 1"
+            << " (the multipliers are updated once |R|/|F| is below it"
+            << " times forceTolerance)" << nl << exit(FatalIOError);
     }
     if (acceptableForceTol_ < 0 || stallIterations_ < 1 || krylovRefresh_ < 0)
     {
@@ -294,13 +321,20 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
     scalar dxCur = 0;
     bool fullPrev = false;
     bool firstSolve = true;
+    // [C5b] the next step absorbs a multiplier update
+    bool afterUpdate = false;
     bool fullLast = false;
 
     // [S16b] a Jacobian of this solve is in place; a chord step taken
     bool haveJacobian = false;
     bool chordTaken = false;
 
-    for (label it = 0; it <= maxNewton_; ++it)
+    // [C5b] multipliers updated between the iterations; every update
+    // gives the solve maxNewtonIterations more
+    const bool augmenting = augmentInside_ && sys.augmentable();
+    label itLimit = maxNewton_;
+
+    for (label it = 0; it <= itLimit; ++it)
     {
         if (!gFinite(R))
         {
@@ -308,7 +342,7 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
             break;
         }
 
-        const scalar Fscale = sys.forceScale();
+        scalar Fscale = sys.forceScale();
         res.forceResidual = Fscale > 0 ? normR/Fscale : (normR > 0 ? 1 : 0);
 
         const scalar increment =
@@ -329,6 +363,39 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
                 << res.displacementResidual << endl;
         }
 
+        // [C5b] inexact Uzawa: near the solution the multipliers are
+        // updated at the iterate and Newton goes on from it with them (its
+        // next step absorbs the update); a solve converges only where they
+        // did not change
+        res.multipliersConverged = false;
+        if (augmenting && res.forceResidual <= augmentForceFactor_*forceTol)
+        {
+            if (sys.augment(x))
+            {
+                ++res.augmentations;
+                evaluate(sys, x, R);
+                normR = gFinite(R) ? gNorm(R) : GREAT;
+                normRprev = normR;
+                xBest = x;
+                normBest = normR;
+                itBest = it;
+                itLimit = it + maxNewton_;
+                dxPrev = dxCur = 0;
+                fullPrev = fullLast = false;
+                firstSolve = true;
+                chordTaken = false;
+                afterUpdate = true;
+                Fscale = sys.forceScale();
+                res.forceResidual =
+                    Fscale > 0 ? normR/Fscale : (normR > 0 ? 1 : 0);
+                res.displacementResidual = GREAT;
+            }
+            else
+            {
+                res.multipliersConverged = true;
+            }
+        }
+
         if
         (
             res.forceResidual <= forceTol
@@ -338,11 +405,12 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
             res.converged = true;
             break;
         }
+        res.multipliersConverged = false;
         const scalar bestResidual = Fscale > 0 ? normBest/Fscale : 1;
         const bool accept =
             bestResidual <= acceptableForceTol_
-         && (it == maxNewton_ || it - itBest >= stallIterations_);
-        if (accept || it == maxNewton_)
+         && (it == itLimit || it - itBest >= stallIterations_);
+        if (accept || it == itLimit)
         {
             if (normBest < normR)
             {
@@ -363,7 +431,14 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
         // to reach the force tolerance; after a step that barely lowered
         // |R| (an active set changing) the tightest, since a loose solve
         // with an outdated preconditioner then misleads Newton further
-        if (firstSolve)
+        if (afterUpdate)
+        {
+            // [C5b] the update's correction is needed only to the
+            // accuracy of the next update (a fraction of it)
+            eta = augmentForcing_;
+            firstSolve = false;
+        }
+        else if (firstSolve)
         {
             eta = initialForcing_;
             firstSolve = false;
@@ -389,12 +464,20 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
          && sys.inexactJacobianSolve()
          && res.forceResidual <= forceTol
          && res.displacementResidual <= Foam::sqrt(displacementTol);
+        // [C5b] the step that absorbs a multiplier update: the update
+        // leaves the Jacobian as it was (a constant shift of the
+        // penetration) and is made near the solution, where the last
+        // correction hardly changed it, so the Jacobian and set-up of the
+        // iteration before serve (a chord step, also with a direct solver)
+        const bool updateChord = afterUpdate && haveJacobian && !jacobianFree_;
+        chord = chord || updateChord;
+        afterUpdate = false;
         if (!step(sys, x, R, linTol, it, chord, lastKrylov, dx, res))
         {
             break;
         }
         haveJacobian = true;
-        chordTaken = chordTaken || chord;
+        chordTaken = chordTaken || (chord && !updateChord);
         res.chordSteps += chord;
         res.krylovIterations += lastKrylov;
         ++res.newtonIterations;

@@ -601,6 +601,23 @@ void Foam::solidDiscretisation::holdLinearisation(const bool on)
 }
 
 
+bool Foam::solidDiscretisation::augmentedForcePatches() const
+{
+    forAll(mesh_.boundary(), patchi)
+    {
+        if
+        (
+            bcs_.kind(patchi) == solidBoundaries::FORCE
+         && bcs_.forcePatch(patchi).augmentable()
+        )
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+
 bool Foam::solidDiscretisation::augmentForcePatches()
 {
     bool again = false;

@@ -260,6 +260,12 @@ void Foam::totalLagrangianSolid::beginStep
 }
 
 
+bool Foam::totalLagrangianSolid::augmentable() const
+{
+    return discretisation_.augmentedForcePatches();
+}
+
+
 bool Foam::totalLagrangianSolid::augment(const Eigen::VectorXd& x)
 {
     vectorField u(mesh_.nCells());
