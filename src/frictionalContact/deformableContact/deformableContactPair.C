@@ -13,6 +13,7 @@ Description
 
 #include "deformableContactFvPatchVectorField.H"
 #include "volFields.H"
+#include "HashSet.H"
 #include <ctime>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -409,6 +410,10 @@ void Foam::deformableContactFvPatchVectorField::couplingCandidates
 
     c.clear();
     faceCoupling e;
+    // a pair of master faces shares the candidate lists of many slave
+    // faces: each coupling listed once (the pattern is a set, and every
+    // entry listed is a stencil to add and, in parallel, to send)
+    HashSet<labelPair, labelPair::Hash<>> masterPairs;
     forAll(cand, i)
     {
         for (const label mi : cand[i])
@@ -427,7 +432,7 @@ void Foam::deformableContactFvPatchVectorField::couplingCandidates
             c.append(e);
             for (const label mj : cand[i])
             {
-                if (mj != mi)
+                if (mj != mi && masterPairs.insert(labelPair(mi, mj)))
                 {
                     e.patch = patch().index();
                     e.otherFace = mj;
