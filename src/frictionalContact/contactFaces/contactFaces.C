@@ -7,6 +7,8 @@ License
 #include "volFields.H"
 #include "IOdictionary.H"
 #include "bodyLaws.H"
+#include "vonMisesPlastic.H"
+#include "surfaceFields.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -52,11 +54,87 @@ void Foam::contactFaces::createLaw() const
     law_ = frictionLaw::New(dict);
     effectiveLawDict_ = dict;
     layout_ = law_->stateLayout();
+    createBodyLaw();
 
     Info<< contactType() << " on patch " << contactPatch().name() << ": law "
         << lawDict_.get<word>("type") << ", KN " << law_->KN()
         << " Pa/m, KT " << law_->KT() << " Pa/m"
         << (automatic ? " (automatic)" : "") << endl;
+}
+
+
+void Foam::contactFaces::createBodyLaw() const
+{
+    bodyLaw_.clear();
+    shearYieldTimeIndex_ = -1;
+    if (!law_->needsShearYield())
+    {
+        return;
+    }
+
+    // [F35] k comes from the mechanical law of the body that holds the
+    // patch's cells: only a plastic one has a flow stress
+    const fvPatch& p = contactPatch();
+    const fvMesh& mesh = p.boundaryMesh().mesh();
+    const IOdictionary& mp =
+        mesh.lookupObject<IOdictionary>("mechanicalProperties");
+    const labelUList& fc = p.faceCells();
+    word lawType("none");
+    if (fc.size())
+    {
+        bodyLaw_ = mechanicalLaw::New(bodyLaws::lawDict(mp, mesh, fc[0]));
+        lawType = bodyLaw_->type();
+        if (!isA<mechanicalLaws::vonMisesPlastic>(bodyLaw_()))
+        {
+            bodyLaw_.clear();
+        }
+    }
+    if (returnReduce(fc.size() && !bodyLaw_.valid(), orOp<bool>()))
+    {
+        FatalIOErrorInFunction(mp)
+            << "patch " << p.name() << ": friction law "
+            << lawDict_.get<word>("type") << " needs the shear flow stress"
+            << " k = sigma_y/sqrt(3) of the body in contact, but the"
+            << " mechanical law of the patch's body in " << mp.name()
+            << " is " << lawType << ", which has no flow stress; give the"
+            << " body a plastic law (vonMisesPlastic) or choose a friction"
+            << " law without k (coulomb, tabulated with quantity mu, ...)"
+            << nl << exit(FatalIOError);
+    }
+}
+
+
+Foam::scalar Foam::contactFaces::shearYield(const label i) const
+{
+    if (!bodyLaw_.valid())
+    {
+        return -1;
+    }
+
+    // [F35] k_n from the face's committed plastic strain: constant over
+    // the step, refreshed once per time step
+    const fvPatch& p = contactPatch();
+    const fvMesh& mesh = p.boundaryMesh().mesh();
+    const label timeIndex = mesh.time().timeIndex();
+    if (timeIndex != shearYieldTimeIndex_ || shearYield_.size() != p.size())
+    {
+        const mechanicalLaws::vonMisesPlastic& vm =
+            refCast<const mechanicalLaws::vonMisesPlastic>(bodyLaw_());
+        scalarField epsP(p.size(), 0);
+        if (mesh.foundObject<surfaceScalarField>("epsilonPf"))
+        {
+            epsP =
+                mesh.lookupObject<surfaceScalarField>("epsilonPf")
+               .boundaryField()[p.index()];
+        }
+        shearYield_.setSize(p.size());
+        forAll(epsP, facei)
+        {
+            shearYield_[facei] = vm.yieldStress(epsP[facei])/std::sqrt(3.0);
+        }
+        shearYieldTimeIndex_ = timeIndex;
+    }
+    return shearYield_[i];
 }
 
 
@@ -196,6 +274,10 @@ void Foam::contactFaces::copyContactFaces(const contactFaces& ptf)
     if (ptf.law_.valid())
     {
         law_ = frictionLaw::New(effectiveLawDict_);
+        if (ptf.bodyLaw_.valid())
+        {
+            createBodyLaw();
+        }
     }
     penaltyScale_ = ptf.penaltyScale_;
     tangentialPenaltyScale_ = ptf.tangentialPenaltyScale_;
@@ -298,6 +380,7 @@ Foam::contactFaces::contactFaces()
     augmentTolerance_(0),
     augmentMaxIterations_(0),
     nAugmentations_(0),
+    shearYieldTimeIndex_(-1),
     linearised_(false)
 {}
 

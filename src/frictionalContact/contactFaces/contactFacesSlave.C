@@ -45,6 +45,7 @@ void Foam::contactFaces::evaluateSlaveFace
     in.gT = (tensor::I - sqr(sf.n)) & (state()[i].totalSlip + ds);
     in.n = sf.n;
     in.dt = dt;
+    in.shearYield = shearYield(i);
     if (held)
     {
         // the law's consistent tangent at the held result [F7]
@@ -99,6 +100,7 @@ void Foam::contactFaces::slaveFaceTangent
     in.gT = P & v;
     in.n = n;
     in.dt = dt;
+    in.shearYield = shearYield(i);
     frictionResult res;
     law().update(old, in, res);
 
