@@ -27,6 +27,19 @@ Foam::scalar Foam::driverModes::contactPressure(const dictionary& dict)
 }
 
 
+Foam::scalar Foam::driverModes::shearYield
+(
+    const dictionary& dict,
+    const frictionLaw& law
+)
+{
+    return
+        law.needsShearYield()
+      ? frictionParameters::positive(dict, "shearYield")
+      : -1;
+}
+
+
 Foam::scalar Foam::driverModes::nonNegative
 (
     const dictionary& d,

@@ -138,6 +138,7 @@ void Foam::driverModes::prescribed
     autoPtr<Function1<scalar>> v = Function1<scalar>::New("slipRate", d);
 
     frictionPointDriver drv(law, p);
+    drv.setShearYield(shearYield(dict, law));
     runIn(drv, d, v->value(0), h.dt);
 
     // Well-posedness on the history's rates at its pressure [F21]
@@ -177,6 +178,7 @@ void Foam::driverModes::springSlider
         Function1<scalar>::New("loadPointVelocity", d);
 
     frictionPointDriver drv(law, p);
+    drv.setShearYield(shearYield(dict, law));
 
     // Run-in at V(0) (steady sliding), then the spring at the steady force
     const scalar V0 = V->value(0);

@@ -24,6 +24,7 @@ Foam::frictionPointDriver::frictionPointDriver
 :
     law_(law),
     p_(pressure),
+    shearYield_(-1),
     time_(0),
     slip_(0),
     velocity_(0),
@@ -47,6 +48,7 @@ Foam::frictionInput Foam::frictionPointDriver::input
     in.gT = vector(s, 0, 0);
     in.n = vector(0, 0, 1);
     in.dt = dt;
+    in.shearYield = shearYield_;
     return in;
 }
 

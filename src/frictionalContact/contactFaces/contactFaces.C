@@ -9,6 +9,7 @@ License
 #include "bodyLaws.H"
 #include "vonMisesPlastic.H"
 #include "surfaceFields.H"
+#include "emptyFvPatch.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -104,6 +105,53 @@ void Foam::contactFaces::createBodyLaw() const
 }
 
 
+Foam::tmp<Foam::scalarField> Foam::contactFaces::cellPlasticStrain
+(
+    const surfaceScalarField& epsilonPf
+) const
+{
+    // [F35] the plastic history lives on faces ([S9]); a cell's equivalent
+    // plastic strain is the area-weighted mean over its faces that carry
+    // one (internal faces and boundary faces that are not force
+    // boundaries, as the solver's epsilonPEq output)
+    const fvPatch& p = contactPatch();
+    const fvMesh& mesh = p.boundaryMesh().mesh();
+    const volVectorField& D = mesh.lookupObject<volVectorField>("D");
+    const polyBoundaryMesh& pbm = mesh.boundaryMesh();
+    const scalarField& magSf = mesh.magSf();
+    const labelUList& fc = p.faceCells();
+
+    tmp<scalarField> teps(new scalarField(fc.size(), 0));
+    scalarField& eps = teps.ref();
+    forAll(fc, i)
+    {
+        scalar sumA = 0;
+        scalar sumE = 0;
+        for (const label f : mesh.cells()[fc[i]])
+        {
+            if (mesh.isInternalFace(f))
+            {
+                sumA += magSf[f];
+                sumE += magSf[f]*epsilonPf[f];
+                continue;
+            }
+            const label patchi = pbm.whichPatch(f);
+            const fvPatchVectorField& Dp = D.boundaryField()[patchi];
+            if (isA<emptyFvPatch>(Dp.patch()) || isA<solidForceBoundary>(Dp))
+            {
+                continue;
+            }
+            const label j = f - pbm[patchi].start();
+            const scalar a = mesh.magSf().boundaryField()[patchi][j];
+            sumA += a;
+            sumE += a*epsilonPf.boundaryField()[patchi][j];
+        }
+        eps[i] = sumE/max(sumA, VSMALL);
+    }
+    return teps;
+}
+
+
 Foam::scalar Foam::contactFaces::shearYield(const label i) const
 {
     if (!bodyLaw_.valid())
@@ -111,8 +159,8 @@ Foam::scalar Foam::contactFaces::shearYield(const label i) const
         return -1;
     }
 
-    // [F35] k_n from the face's committed plastic strain: constant over
-    // the step, refreshed once per time step
+    // [F35] k_n from the committed plastic strain of the face's cell:
+    // constant over the step, refreshed once per time step
     const fvPatch& p = contactPatch();
     const fvMesh& mesh = p.boundaryMesh().mesh();
     const label timeIndex = mesh.time().timeIndex();
@@ -123,9 +171,10 @@ Foam::scalar Foam::contactFaces::shearYield(const label i) const
         scalarField epsP(p.size(), 0);
         if (mesh.foundObject<surfaceScalarField>("epsilonPf"))
         {
-            epsP =
+            epsP = cellPlasticStrain
+            (
                 mesh.lookupObject<surfaceScalarField>("epsilonPf")
-               .boundaryField()[p.index()];
+            );
         }
         shearYield_.setSize(p.size());
         forAll(epsP, facei)

@@ -21,6 +21,16 @@
 #                        alpha(v) from the lubrication model (constant or
 #                        Stribeck [F19]) at the derived rate, mu0 [F18],
 #                        steady contact age D0/v: f = 1 + M/2 ln(1 + V_s^2/v^2)
+#       shearFactor [F35], [F36]  Fx = m sum(k_i a_i): each face slides at
+#                        m times the shear flow stress k_i it was given, on
+#                        its current area a_i (nominalContactPressure over
+#                        contactPressure times the reference area); k_i
+#                        against sigma_y(epsP_i)/sqrt(3) of the plastic
+#                        strain of the face's cell and the hardening table of
+#                        mechanicalProperties (shearYieldError), how much
+#                        hardening there is (hardeningRatio: mean k over
+#                        k at epsP = 0) and how far the initial k would be
+#                        off (initialYieldForceError);
 #       curnier [F9], [F10]  Fx = (C A + f N - Q sum(g_i) A/n)/(1 - Q/KT):
 #                        threshold C + f tN - Q Dc on every face with the
 #                        cumulated slip Dc = g - Fx_face/KT of a face whose
@@ -42,6 +52,7 @@
 # friction force over mu N).
 import math
 import os
+import re
 import subprocess
 import sys
 
@@ -159,6 +170,39 @@ else:
         pred = (C*A + f*N - Q*sum(g)*A/len(g))/(1 - Q/KT)
         # wear unloads the block: its faces do not move with the top
         del res["slipRateSpread"]
+    elif lawType == "shearFactor":
+        m = law("m")
+        k = patch(case, t1, "shearYield")
+        # current areas of the faces in contact (an open face carries none)
+        area = [A/40*q/p if p > 0 else 0 for q, p in zip(
+            patch(case, t1, "nominalContactPressure"),
+            patch(case, t1, "contactPressure"))]
+        pred = m*sum(ki*ai for ki, ai in zip(k, area))
+        # the flow stress of each face from its plastic strain: the linear
+        # hardening table of mechanicalProperties
+        r = subprocess.run(["foamDictionary", os.path.join(
+            case, "constant", "mechanicalProperties"), "-entry",
+            "mechanicalLaw/yieldStress", "-value"], stdout=subprocess.PIPE,
+            text=True, check=True)
+        pts = [float(x) for x in re.findall(r"[-+]?\d+\.?\d*(?:[eE][-+]?\d+)?", r.stdout)]
+        (e0, s0), (e1, s1) = zip(pts[0::2], pts[1::2])
+        # the bottom row of cells (blockMesh: x fastest, the bottom
+        # faces' order), their plastic strain as the solver writes it
+        eps = foamio.readInternalField(os.path.join(case, t1, "epsilonPEq"),
+                                       800)[:40]
+        sy = [s0 + (s1 - s0)*(e - e0)/(e1 - e0) for e in eps]
+        res["shearYieldError"] = max(abs(ki - y/math.sqrt(3))/(y/math.sqrt(3))
+                                     for ki, y, a in zip(k, sy, area) if a > 0)
+        res["contactFaceFraction"] = sum(1 for a in area if a > 0)/len(area)
+        kc = [ki for ki, a in zip(k, area) if a > 0]
+        res["hardeningRatio"] = sum(kc)/len(kc)/(s0/math.sqrt(3))
+        res["plasticStrainMin"] = min(eps)
+        res["initialYieldForceError"] = abs(
+            abs(Fx) - m*s0/math.sqrt(3)*sum(area))/abs(Fx)
+        print("    shearFactor: faces' epsP %.4g-%.4g, mean k %.4g MPa (%.3f"
+              " of the initial), k against sigma_y(epsP)/sqrt(3) %.2e"
+              % (min(eps), max(eps), sum(kc)/len(kc)*1e-6,
+                 res["hardeningRatio"], res["shearYieldError"]))
     else:
         sys.exit("check.py: no check for law %s" % lawType)
     res["frictionRelError"] = abs(abs(Fx) - pred)/pred

@@ -48,7 +48,7 @@ void Foam::frictionLaws::flowStressFriction::update
         openContact(old, in, out);
         return;
     }
-    if (!(in.shearYield >= 0))
+    if (needsShearYield() && !(in.shearYield >= 0))
     {
         FatalErrorInFunction
             << "friction law " << type() << " (dictionary " << dictName_
