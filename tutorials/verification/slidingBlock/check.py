@@ -23,7 +23,9 @@
 #                        steady contact age D0/v: f = 1 + M/2 ln(1 + V_s^2/v^2)
 #       shearFactor [F35], [F36]  Fx = m sum(k_i a_i): each face slides at
 #                        m times the shear flow stress k_i it was given, on
-#                        its current area a_i (nominalContactPressure over
+#                        its current area a_i; generalFriction [F38],
+#                        cappedCoulomb [F37] alike with their tau_f(tN_i, k_i)
+#                        at each face's pressure (nominalContactPressure over
 #                        contactPressure times the reference area); k_i
 #                        against sigma_y(epsP_i)/sqrt(3) of the plastic
 #                        strain of the face's cell and the hardening table of
@@ -99,6 +101,21 @@ def mag(v):
     return math.sqrt(sum(x*x for x in v))
 
 
+def tauF(lawType, p, k):
+    """Shear strength of the forming laws at pressure p and shear flow
+    stress k (doc/theory.md [F36]-[F38])"""
+    if lawType == "shearFactor":
+        return law("m")*k
+    if lawType == "cappedCoulomb":
+        return min(law("mu")*p, law("m")*k)
+    f, aT = law("f"), law("transitionRealArea", 0.5)
+    h = 1 + math.pi/2 + math.acos(f) + math.sqrt(1 - f*f)
+    pk = p/k
+    alpha = pk/h if pk <= aT*h else \
+        1 - (1 - aT)*math.exp(-(pk - aT*h)/((1 - aT)*h))
+    return f*alpha*k
+
+
 res = {}
 if len(sys.argv) > 3 and sys.argv[2] == "-stick":
     bonded = sys.argv[3]
@@ -170,14 +187,14 @@ else:
         pred = (C*A + f*N - Q*sum(g)*A/len(g))/(1 - Q/KT)
         # wear unloads the block: its faces do not move with the top
         del res["slipRateSpread"]
-    elif lawType == "shearFactor":
-        m = law("m")
+    elif lawType in ("shearFactor", "generalFriction", "cappedCoulomb"):
         k = patch(case, t1, "shearYield")
+        tN = patch(case, t1, "contactPressure")
         # current areas of the faces in contact (an open face carries none)
         area = [A/40*q/p if p > 0 else 0 for q, p in zip(
             patch(case, t1, "nominalContactPressure"),
             patch(case, t1, "contactPressure"))]
-        pred = m*sum(ki*ai for ki, ai in zip(k, area))
+        pred = sum(tauF(lawType, p, ki)*ai for p, ki, ai in zip(tN, k, area))
         # the flow stress of each face from its plastic strain: the linear
         # hardening table of mechanicalProperties
         r = subprocess.run(["foamDictionary", os.path.join(
@@ -197,11 +214,24 @@ else:
         kc = [ki for ki, a in zip(k, area) if a > 0]
         res["hardeningRatio"] = sum(kc)/len(kc)/(s0/math.sqrt(3))
         res["plasticStrainMin"] = min(eps)
-        res["initialYieldForceError"] = abs(
-            abs(Fx) - m*s0/math.sqrt(3)*sum(area))/abs(Fx)
-        print("    shearFactor: faces' epsP %.4g-%.4g, mean k %.4g MPa (%.3f"
+        # faces past the switch (cappedCoulomb: mu tN > m k) or the
+        # transition (generalFriction: p/k > alphaT h): both sides seen
+        if lawType != "shearFactor":
+            def high(p, ki):
+                if lawType == "cappedCoulomb":
+                    return law("mu")*p > law("m")*ki
+                f, aT = law("f"), law("transitionRealArea", 0.5)
+                h = 1 + math.pi/2 + math.acos(f) + math.sqrt(1 - f*f)
+                return p/ki > aT*h
+            res["highPressureFraction"] = sum(
+                1 for p, ki, a in zip(tN, k, area) if a > 0 and high(p, ki)) \
+                / sum(1 for a in area if a > 0)
+        res["initialYieldForceError"] = abs(abs(Fx) - sum(
+            tauF(lawType, p, s0/math.sqrt(3))*ai
+            for p, ai in zip(tN, area)))/abs(Fx)
+        print("    %s: faces' epsP %.4g-%.4g, mean k %.4g MPa (%.3f"
               " of the initial), k against sigma_y(epsP)/sqrt(3) %.2e"
-              % (min(eps), max(eps), sum(kc)/len(kc)*1e-6,
+              % (lawType, min(eps), max(eps), sum(kc)/len(kc)*1e-6,
                  res["hardeningRatio"], res["shearYieldError"]))
     else:
         sys.exit("check.py: no check for law %s" % lawType)
