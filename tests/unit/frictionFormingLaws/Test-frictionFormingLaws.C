@@ -297,6 +297,76 @@ int main()
         Foam::rm(fileName("frictionTable.tmp"));
     }
 
+    Info<< "tabulated: temperature [F39]" << endl;
+    {
+        const std::string tables =
+            " temperatures (293 1173);"
+            " tables ( ((0 ((0 0.1))) (1e9 ((0 0.3))))"
+            "          ((0 ((0 0.2))) (1e9 ((0 0.6)))) );";
+        autoPtr<frictionLaw> hot = frictionTest::law
+        (
+            "type tabulated; KN 1e13; KT 1e13; quantity mu;"
+            " temperature 953;" + tables
+        );
+        const auto& t = refCast<const frictionLaws::tabulated>(hot());
+        scalar dp, dv;
+        // 953 K is 3/4 of the way: mu(5e8) = 0.25 (1/4) + 0.75 (3/4) 0.4
+        unitTest::checkRel
+        (
+            "953 K, 5e8 Pa: 0.25*0.2 + 0.75*0.4",
+            t.value(5e8, 0, true, dp, dv), 0.35, 1e-14
+        );
+        unitTest::checkRel
+        (
+            "slope in p between the temperatures",
+            dp, 0.25*0.2/1e9 + 0.75*0.4/1e9, 1e-12
+        );
+        frictionResult r;
+        frictionInput in = pressed(5e8, -1, far);
+        hot->update(hot->initialState(), in, r);
+        unitTest::checkRel("sliding at 0.35 tN", mag(r.tT), 0.35*5e8, 1e-13);
+        unitTest::checkBelow
+        (
+            "temperature table: slip tangent vs FD",
+            frictionTest::tangentError(*hot, hot->initialState(), in), 1e-6
+        );
+        autoPtr<frictionLaw> cold = frictionTest::law
+        (
+            "type tabulated; KN 1e13; KT 1e13; quantity mu;"
+            " temperature 200;" + tables
+        );
+        unitTest::checkRel
+        (
+            "below the tables' temperatures: the coldest table (clamped)",
+            refCast<const frictionLaws::tabulated>(cold()).value
+            (
+                5e8, 0, true, dp, dv
+            ),
+            0.2, 1e-14
+        );
+        unitTest::checkTrue
+        (
+            "temperatures not increasing rejected, naming 'temperatures'",
+            throwsIO
+            (
+                "type tabulated; KN 1; KT 1; quantity mu; temperature 300;"
+                " temperatures (400 300);"
+                " tables ( ((0 ((0 0.1)))) ((0 ((0 0.1)))) );",
+                "'temperatures'"
+            )
+        );
+        unitTest::checkTrue
+        (
+            "one table too few rejected, naming 'tables'",
+            throwsIO
+            (
+                "type tabulated; KN 1; KT 1; quantity mu; temperature 300;"
+                " temperatures (300 400); tables ( ((0 ((0 0.1)))) );",
+                "'tables'"
+            )
+        );
+    }
+
     Info<< "Input checks" << endl;
     {
         unitTest::checkTrue
