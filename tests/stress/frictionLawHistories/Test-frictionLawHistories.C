@@ -25,7 +25,10 @@ Description
         relaxation ([F28]): mu* + a ln(v_eff/V*) + b gamma ln(V* / v);
         regularised ([F12]): a asinh(v/(2V*) exp((mu* + b ln(V* / v))/a));
         lubricated ([F29], [F17]): (1 - alpha) f_ss mu0(v) p + alpha eta_b v
-            with f_ss = 1 + M/2 ln(1 + V_s^2/v^2).
+            with f_ss = 1 + M/2 ln(1 + V_s^2/v^2);
+        forming laws at the body's k = 3 p ([F35]): shearFactor [F36] m k;
+            cappedCoulomb [F37] min(mu p, m k); generalFriction [F38]
+            f/h(f) p (p/k below the transition); tabulated [F39] mu(|v|).
     The lubricated law is exact for piecewise-constant rates ([F13], theory
     8.7), so on its sliding steps after the jump and after the hold it must
     follow, to 1e-9, the contact-age solution of doc/theory.md [F23]
@@ -52,6 +55,7 @@ Description
 #include "unitTest.H"
 #include "frictionTestTools.H"
 #include "frictionPointDriver.H"
+#include "mathematicalConstants.H"
 #include "lubricatedRateState.H"
 #include <functional>
 #include <vector>
@@ -62,6 +66,10 @@ namespace
 {
 
 const scalar p = 1e7;
+
+//- Shear flow stress of the body for the forming laws [F35] (p/k = 1/3);
+//  the other laws ignore it
+const scalar kBody = 3e7;
 
 struct segment
 {
@@ -164,6 +172,7 @@ bool drive
     const long hits0 = frictionLaw::nIterationLimitHits();
     const frictionStateLayout& layout = law->stateLayout();
     frictionPointDriver drv(*law, p);
+    drv.setShearYield(kBody);
     std::vector<std::vector<row>> rows(history.size());
     for (size_t si = 0; si < history.size(); ++si)
     {
@@ -479,7 +488,24 @@ int main()
         {"lubricated mu0=0",
             lubDict("muStatic 0; muDynamic 0; criticalVelocity 1e-3;",
                 "type constant; alpha 0.3;"),
-            lubSteady(0, 0, constAlpha(0.3)), false, true, true, lub}
+            lubSteady(0, 0, constAlpha(0.3)), false, true, true, lub},
+        // forming laws ([F36]-[F39]) at p/k = 1/3
+        {"shearFactor m=0.3", "type shearFactor; m 0.3; " + pen,
+            [](scalar) { return 0.3*kBody/p; }, false, true, false, lub},
+        {"cappedCoulomb capped", "type cappedCoulomb; mu 0.5; m 0.1; " + pen,
+            [](scalar) { return 0.1*kBody/p; }, false, true, false, lub},
+        {"generalFriction f=0.5", "type generalFriction; f 0.5; " + pen,
+            [](scalar)
+            {
+                return 0.5/(1 + constant::mathematical::piByTwo
+                    + std::acos(0.5) + std::sqrt(0.75));
+            }, false, true, false, lub},
+        {"tabulated mu(v)", "type tabulated; quantity mu;"
+            " table ((0 ((1e-9 0.2) (1e-3 0.1)))); " + pen,
+            [](scalar v)
+            {
+                return 0.2 - 0.1*(std::abs(v) - 1e-9)/(1e-3 - 1e-9);
+            }, false, true, false, lub}
     };
 
     std::vector<std::vector<std::string>> matrix;
