@@ -226,13 +226,25 @@ void Foam::contactFaces::readState
 
 void Foam::contactFaces::readAugmentation(const dictionary& dict)
 {
-    augmented_ = dict.found("augmentedLagrangian");
+    // [C5c] on by default with the automatic (soft) penalty; an explicit
+    // penaltyScale alone asks for the plain penalty
+    const entry* e = dict.findEntry("augmentedLagrangian", keyType::LITERAL);
+    augmented_ =
+        !e ? !dict.found("penaltyScale")
+      : e->isDict() || dict.get<bool>("augmentedLagrangian");
     if (!augmented_)
     {
         return;
     }
-    const dictionary& a = dict.subDict("augmentedLagrangian");
-    augmentTolerance_ = a.get<scalar>("tolerance");
+    // a dictionary names its tolerance; the default (or 'yes') takes
+    // 1e-4 of the largest cell depth [C5c]
+    const dictionary empty(dict, dictionary());
+    const bool given = e && e->isDict();
+    const dictionary& a = given ? e->dict() : empty;
+    augmentTolerance_ =
+        given
+      ? a.get<scalar>("tolerance")
+      : 1e-4*contactSurface::maxCellDepth(contactPatch());
     augmentMaxIterations_ = a.lookupOrDefault<label>("maxIterations", 10);
     if (!(augmentTolerance_ > 0) || augmentMaxIterations_ < 1)
     {
@@ -268,7 +280,9 @@ void Foam::contactFaces::readContactFaces(const dictionary& dict)
 {
     lawDict_ = dict.subDict("frictionLaw");
     readAugmentation(dict);
-    penaltyScale_ = dict.lookupOrDefault<scalar>("penaltyScale", 100);
+    // [C5], [C5c] stiff for the plain penalty, soft for the augmented one
+    penaltyScale_ =
+        dict.lookupOrDefault<scalar>("penaltyScale", augmented_ ? 10 : 100);
     tangentialPenaltyScale_ =
         dict.lookupOrDefault<scalar>("tangentialPenaltyScale", 0.1);
     if (!(penaltyScale_ > 0) || !(tangentialPenaltyScale_ > 0))

@@ -151,6 +151,45 @@ void Foam::contactFaces::slaveFaceTangent
 }
 
 
+Foam::tmp<Foam::scalarField> Foam::contactFaces::augmentedPenetrations
+(
+    const contactSurface& master
+) const
+{
+    tmp<scalarField> tp(new scalarField(contactPatch().size(), -GREAT));
+    scalarField& p = tp.ref();
+    forAll(p, i)
+    {
+        masterPoint mp;
+        if (master.masterPointOf(i, mp))
+        {
+            p[i] = augmentedPenetration(i, mp.gap);
+        }
+    }
+    return tp;
+}
+
+
+Foam::scalar Foam::contactFaces::contactOnsetFraction
+(
+    const scalarField& p0,
+    const scalarField& p1
+) const
+{
+    // [S14b] linear in the fraction between the two ends
+    const scalar e = contactSmoothing_;
+    scalar fraction = 1;
+    forAll(p0, i)
+    {
+        if (p0[i] < -e && p1[i] > e)
+        {
+            fraction = min(fraction, -p0[i]/(p1[i] - p0[i]));
+        }
+    }
+    return returnReduce(fraction, minOp<scalar>());
+}
+
+
 void Foam::contactFaces::holdSlaveFaces(const List<slaveFace>& faces)
 {
     beginHold();

@@ -67,6 +67,19 @@ void Foam::frictionalContactFvPatchVectorField::linearise
 }
 
 
+Foam::scalar Foam::frictionalContactFvPatchVectorField::firstContactFraction
+(
+    const solidPatchKinematics& k0,
+    const solidPatchKinematics& k1
+) const
+{
+    // [S14b] the onset along the change, the obstacle where it is at the
+    // end of the step in both
+    const scalarField p0(augmentedPenetrations(surface_->bind(k0)));
+    return contactOnsetFraction(p0, augmentedPenetrations(surface_->bind(k1)));
+}
+
+
 void Foam::frictionalContactFvPatchVectorField::release()
 {
     releaseHold();

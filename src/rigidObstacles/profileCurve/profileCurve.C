@@ -240,6 +240,7 @@ Foam::profileCurve::nearestPoint Foam::profileCurve::nearestOn
             aq =
                 magSqr(p - s.start) <= magSqr(p - s.end)
               ? s.a0 : s.a0 + s.sweep;
+            np.atEnd = true;
         }
         np.p = s.centre + s.radius*unit(aq);
         np.n = normal(s, aq);
@@ -249,7 +250,9 @@ Foam::profileCurve::nearestPoint Foam::profileCurve::nearestOn
     else
     {
         const vector2D e(s.end - s.start);
-        const scalar u = min(max(((p - s.start) & e)/magSqr(e), 0.0), 1.0);
+        const scalar t = ((p - s.start) & e)/magSqr(e);
+        const scalar u = min(max(t, 0.0), 1.0);
+        np.atEnd = t != u;
         np.p = s.start + u*e;
         np.n = normal(s, 0);
         np.curvature = 0;
@@ -374,6 +377,7 @@ Foam::profileCurve::nearestPoint Foam::profileCurve::nearest
         {
             best.n = (best.n + np.n)/mag(best.n + np.n);
             best.curvature = 0;
+            best.atEnd = true;
         }
     }
     return best;

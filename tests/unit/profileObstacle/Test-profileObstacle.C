@@ -96,6 +96,45 @@ std::string pearEntries()
       + v2(top) + "; } );";
 }
 
+//- [C8], [C6] the obstacle's dn/dx, dp/dx and dgap/dx at the points ys
+//  against central differences of its nearest point (step 1e-8 of the
+//  profile's size; dn/dx checked scaled by 1e-2 m, a cell's size)
+void checkDerivatives
+(
+    const std::string& what,
+    const rigidObstacle& obstacle,
+    std::initializer_list<point> ys
+)
+{
+    const scalar h = 1e-10;
+    for (const point& y : ys)
+    {
+        obstaclePoint c0;
+        obstacle.nearest(y, 0, 10, c0);
+        scalar errN = 0, errP = 0, errG = 0;
+        for (direction j = 0; j < 3; ++j)
+        {
+            vector e(Zero);
+            e[j] = h;
+            obstaclePoint cp, cm;
+            obstacle.nearest(y + e, 0, 10, cp);
+            obstacle.nearest(y - e, 0, 10, cm);
+            const vector dn((cp.n - cm.n)/(2*h));
+            const vector dp((cp.p - cm.p)/(2*h));
+            for (direction i = 0; i < 3; ++i)
+            {
+                errN = max(errN, 1e-2*mag(dn[i] - c0.dndx(i, j)));
+                errP = max(errP, mag(dp[i] - c0.dpdx(i, j)));
+            }
+            errG = max(errG, mag((cp.gap - cm.gap)/(2*h) - c0.dgapdx[j]));
+        }
+        const std::string at(what + " derivatives at " + name(y) + ": ");
+        unitTest::checkBelow(at + "dn/dx (x 1 cm)", errN, 1e-5);
+        unitTest::checkBelow(at + "dp/dx", errP, 1e-5);
+        unitTest::checkBelow(at + "dgap/dx", errG, 1e-5);
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -297,6 +336,34 @@ int main()
         checkAbs("obstacle: normal +y", cp.n.y(), 1, tol);
         checkAbs("obstacle: p keeps z", cp.p.z(), 5e-4, tol);
         checkTrue("obstacle: out of reach", !die->nearest(x, 0, 1e-4, cp));
+
+        // [C8], [C6] dn/dx, dp/dx and dgap/dx against central differences:
+        // on the circle and the fillet (seen from their concave side), a
+        // flank (a line)
+        checkDerivatives
+        (
+            "die", die(),
+            {
+                point(0.003, -0.0255, 1e-4), point(0.0102, -0.0149, 0),
+                point(0.0124, 0.0305, 0), point(0.001, 0.044, 2e-4)
+            }
+        );
+        // an arc seen from its convex side (the punch of radius 1 in the
+        // x-y plane) and beyond its end (clamped)
+        checkDerivatives
+        (
+            "punch",
+            rigidObstacle::New
+            (
+                dictOf
+                (
+                    "type profile; freeSide left; segments ( arc { start"
+                    " (-1 0); mid (0 1); end (1 0); } );"
+                ),
+                dir
+            )(),
+            {point(0.3, 1.4, 0), point(-0.2, 1.1, 0.5), point(1.5, -0.5, 0)}
+        );
         rmDir(dir);
     }
 

@@ -89,6 +89,29 @@ bool Foam::rigidObstacles::profileObstacle::nearestInitial
     cp.n = vector(np.n.x(), np.n.y(), 0);
     cp.gap = (x0 - p) & cp.n;
     cp.hint = np.segmenti;
+
+    // [C6] the derivatives with respect to x0 (the extrusion direction z
+    // is a line of every segment): a clamped end or a corner stays put;
+    // on a line p moves in its plane; on an arc of centre c, seen from
+    // x0 at the distance rho, n turns with x0 (the curvature seen from
+    // x0) and p moves by the ratio of the radius to rho
+    const tensor zz(sqr(vector(0, 0, 1)));
+    if (np.atEnd)
+    {
+        cp.dpdx = zz;
+    }
+    else if (np.curvature == 0)
+    {
+        cp.dpdx = tensor::I - sqr(cp.n);
+    }
+    else
+    {
+        const point c(p + cp.n/np.curvature);
+        const scalar rho = mag(x0 - c);
+        const tensor inPlaneTangent(tensor::I - zz - sqr(cp.n));
+        cp.dndx = -sign(np.curvature)*inPlaneTangent/rho;
+        cp.dpdx = zz + inPlaneTangent/(mag(np.curvature)*rho);
+    }
     return true;
 }
 

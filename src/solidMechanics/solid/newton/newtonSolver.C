@@ -22,6 +22,10 @@ Foam::newtonSolver::methodNames
 namespace Foam
 {
 
+//- [S14b] The smallest fraction of a step kept when it stops at a contact
+//  onset: a face just short of its onset does not stall the solve
+static const scalar minOnsetFraction = 1e-2;
+
 static bool readDisplacementTest(const dictionary& dict)
 {
     const word name
@@ -81,6 +85,10 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
     holdLinearisation_
     (
         dict.lookupOrDefault<bool>("holdContactLinearisation", true)
+    ),
+    stopAtContactOnset_
+    (
+        dict.lookupOrDefault<bool>("stopAtContactOnset", true)
     ),
     krylovRefresh_(dict.lookupOrDefault<label>("krylovRefresh", 15)),
     augmentInside_
@@ -491,6 +499,25 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
         if (dxMax > maxCorrection)
         {
             dx *= maxCorrection/dxMax;
+        }
+
+        // [S14b] the step stops where a contact face that is open at x
+        // reaches its obstacle: past it the linearisation (no contact
+        // stiffness there) does not hold, and the full step would drive
+        // the face through the obstacle
+        if (stopAtContactOnset_)
+        {
+            const scalar onset = sys.firstContactFraction(x, dx);
+            if (onset < 1)
+            {
+                dx *= max(onset, minOnsetFraction);
+                ++res.contactOnsetStops;
+                if (verbose_)
+                {
+                    Info<< "        contact onset at " << onset
+                        << " of the step" << endl;
+                }
+            }
         }
 
         // Backtracking line search on |R| (Armijo). When no fraction of

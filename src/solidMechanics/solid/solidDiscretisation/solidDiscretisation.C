@@ -638,6 +638,45 @@ bool Foam::solidDiscretisation::augmentForcePatches()
 }
 
 
+Foam::scalar Foam::solidDiscretisation::firstContactFraction
+(
+    const vectorField& u0,
+    const vectorField& u1
+)
+{
+    const scalar dt = mesh_.time().deltaTValue();
+    PtrList<forceKinematics> k0(mesh_.boundary().size());
+    setIterate(u0);
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (bcs_.kind(patchi) == solidBoundaries::FORCE)
+        {
+            k0.set(patchi, new forceKinematics(*this, patchi, dt));
+        }
+    }
+    setIterate(u1);
+    scalar fraction = 1;
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (k0.set(patchi))
+        {
+            const forceKinematics k1(*this, patchi, dt);
+            // every patch (no short cut: the call is collective)
+            fraction =
+                min
+                (
+                    fraction,
+                    bcs_.forcePatch(patchi).firstContactFraction
+                    (
+                        k0[patchi].k, k1.k
+                    )
+                );
+        }
+    }
+    return fraction;
+}
+
+
 void Foam::solidDiscretisation::resetAugmentation()
 {
     forAll(mesh_.boundary(), patchi)

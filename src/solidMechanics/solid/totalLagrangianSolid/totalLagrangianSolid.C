@@ -275,6 +275,20 @@ bool Foam::totalLagrangianSolid::augment(const Eigen::VectorXd& x)
 }
 
 
+Foam::scalar Foam::totalLagrangianSolid::firstContactFraction
+(
+    const Eigen::VectorXd& x,
+    const Eigen::VectorXd& dx
+)
+{
+    vectorField u0(mesh_.nCells());
+    vectorField u1(mesh_.nCells());
+    unpack(x, u0);
+    unpack(x + dx, u1);
+    return discretisation_.firstContactFraction(u0, u1);
+}
+
+
 void Foam::totalLagrangianSolid::commit(const Eigen::VectorXd& x)
 {
     vectorField u(mesh_.nCells());
