@@ -280,9 +280,15 @@ void Foam::contactFaces::readContactFaces(const dictionary& dict)
 {
     lawDict_ = dict.subDict("frictionLaw");
     readAugmentation(dict);
-    // [C5], [C5c] stiff for the plain penalty, soft for the augmented one
+    // [C5], [C5c] stiff for the plain penalty and a given augmentation
+    // (its tolerance chosen for it), soft for the default augmentation
+    const bool defaultAugmentation =
+        augmented_ && !dict.isDict("augmentedLagrangian");
     penaltyScale_ =
-        dict.lookupOrDefault<scalar>("penaltyScale", augmented_ ? 10 : 100);
+        dict.lookupOrDefault<scalar>
+        (
+            "penaltyScale", defaultAugmentation ? 10 : 100
+        );
     tangentialPenaltyScale_ =
         dict.lookupOrDefault<scalar>("tangentialPenaltyScale", 0.1);
     if (!(penaltyScale_ > 0) || !(tangentialPenaltyScale_ > 0))
