@@ -54,7 +54,8 @@ def dieProfile(circleStep=0.25, flankStep=0.2, filletStep=1.0, overlap=3):
 
 
 def write(directory, job, nWall, nAround, mu, penalty=1e6, stickSlope=1e5,
-          maxInc=0.025, element="CPE8R", contact="NODE TO SURFACE"):
+          maxInc=0.025, element="CPE8R", contact="SURFACE TO SURFACE",
+          foundation=100.0, circleStep=0.5):
     """Writes directory/job.inp; returns the tube mesh."""
     r0 = R_OUT - WALL
     tube = ct.QuadMesh(
@@ -62,7 +63,7 @@ def write(directory, job, nWall, nAround, mu, penalty=1e6, stickSlope=1e5,
         lambda i2, j2: ct.polar(r0 + WALL*i2/(2*nWall),
                                 180.0*j2/(2*nAround)))
     # die band: profile points p and their offsets 1 mm outwards
-    p = dieProfile()
+    p = dieProfile(circleStep)
     n0, e0 = tube.nextNode, tube.nextElement
     dieNodes, dieElems = [], []
     q = []
@@ -82,7 +83,7 @@ def write(directory, job, nWall, nAround, mu, penalty=1e6, stickSlope=1e5,
     bottomInner = tube.node[(0, 0)]
     eSpring = e0 + np_
     # the foundation on the mean displacement of the inner wall, lumped
-    kSpring = FOUNDATION*math.pi*r0*1.0
+    kSpring = foundation*FOUNDATION*math.pi*r0*1.0
 
     L = ["*HEADING", "triboFoam crossCheck: pear-shaped tube, mu %g, "
          "%d x %d %s" % (mu, nWall, nAround, element)]
