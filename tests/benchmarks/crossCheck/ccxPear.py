@@ -53,9 +53,9 @@ def dieProfile(circleStep=0.25, flankStep=0.2, filletStep=1.0, overlap=3):
     return pts
 
 
-def write(directory, job, nWall, nAround, mu, penalty=1e6, stickSlope=1e5,
-          maxInc=0.025, element="CPE8R", contact="SURFACE TO SURFACE",
-          foundation=100.0, circleStep=0.5):
+def write(directory, job, nWall, nAround, mu, penalty=1e5, stickSlope=1e4,
+          maxInc=0.1, element="CPE8R", contact="SURFACE TO SURFACE",
+          foundation=100.0, circleStep=1.0):
     """Writes directory/job.inp; returns the tube mesh."""
     r0 = R_OUT - WALL
     tube = ct.QuadMesh(
@@ -174,9 +174,13 @@ def results(directory, job, tube, time=T_END):
     for e, _ in tube.faces("i1"):
         j = [jj for (ii, jj), ee in tube.element.items() if ee == e][0]
         faceAngle[e] = 180.0*(j + 0.5)/tube.nj
+    perFace = {}
     for r in cs:
-        e = int(r[0])
-        if e in faceAngle:
-            pressure.append((faceAngle[e], r[-3] if len(r) >= 5 else r[1]))
+        if int(r[0]) in faceAngle and len(r) >= 5:
+            perFace.setdefault(int(r[0]), []).append(r[2])
+    for e, ps in perFace.items():
+        # the mean over the face's contact elements (its integration
+        # points against the die's faces)
+        pressure.append((faceAngle[e], sum(ps)/len(ps)))
     return {"protrusion": prot, "profile": profile, "minThickness": tmin[1],
             "minThicknessAngle": tmin[0], "pressure": sorted(pressure)}

@@ -76,7 +76,11 @@ def write(directory, job, nRadial, mu, element="CAX8R", penalty=1e6,
     L += ["*TIME POINTS, NAME=OUT",
           ", ".join("%.6g" % (r/50.0) for r in REDUCTIONS)]
     L += ["*STEP, NLGEOM, INC=100000",
-          "*STATIC", "%g, 1.0, 1e-8, %g" % (maxInc, maxInc),
+          "*STATIC", "%g, 1.0, 1e-6, %g" % (maxInc, maxInc),
+          # up to 10 cut-backs of an increment (default 5): the folding
+          # walls' first contact
+          "*CONTROLS, PARAMETERS=TIME INCREMENTATION",
+          "4, 8, 9, 16, 10, 4, 0, 10",
           "*BOUNDARY", "NPLATEN, 2, 2, %.12g" % -STROKE,
           "*NODE PRINT, NSET=NINNER, TIME POINTS=OUT", "U",
           "*NODE PRINT, NSET=NOUTER, TIME POINTS=OUT", "U",

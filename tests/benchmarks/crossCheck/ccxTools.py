@@ -162,7 +162,8 @@ def runCcx(directory, job, timeout=7200):
             "log": log[-1500:]}
 
 
-_header = re.compile(r"^\s*(.+?)\s*for set (\S+) and time\s+(\S+)")
+_header = re.compile(r"^\s*(.+?)\s*for (?:set (\S+)|all contact elements)"
+                     r" and time\s+(\S+)")
 
 
 def readDat(path):
@@ -175,7 +176,8 @@ def readDat(path):
     for line in open(path, errors="replace"):
         m = _header.match(line)
         if m:
-            cur = blocks.setdefault((m.group(1).strip(), m.group(2)), {})
+            cur = blocks.setdefault((m.group(1).strip(), m.group(2) or ""),
+                                    {})
             cur = cur.setdefault(float(m.group(3)), [])
             continue
         w = line.split()
