@@ -55,7 +55,7 @@ def dieProfile(circleStep=0.25, flankStep=0.2, filletStep=1.0, overlap=3):
 
 def write(directory, job, nWall, nAround, mu, penalty=1e5, stickSlope=1e4,
           maxInc=0.1, element="CPE8R", contact="SURFACE TO SURFACE",
-          foundation=100.0, circleStep=1.0):
+          foundation=100.0, circleStep=1.0, yieldScale=1.0):
     """Writes directory/job.inp; returns the tube mesh."""
     r0 = R_OUT - WALL
     tube = ct.QuadMesh(
@@ -100,7 +100,7 @@ def write(directory, job, nWall, nAround, mu, penalty=1e5, stickSlope=1e4,
     L += ct.setCards("ELSET", "EINNER", [e for e, _ in tube.faces("i0")])
     L += ct.surfaceCards("SOUTER", tube.faces("i1"))
     L += ct.surfaceCards("SDIE", [(e0 + k, "S1") for k in range(np_ - 1)])
-    L += ct.materialCards()
+    L += ct.materialCards(yieldScale=yieldScale)
     L += ["*SOLID SECTION, ELSET=TUBE, MATERIAL=SS304", "1.0",
           "*SOLID SECTION, ELSET=DIE, MATERIAL=SS304", "1.0",
           "*SPRING, ELSET=FOUNDATION", "2", "%.6g" % kSpring]

@@ -42,10 +42,13 @@ def swiftYield(epsP):
     return SWIFT_K*(SWIFT_EPS0 + epsP)**SWIFT_N
 
 
-def materialCards(name="SS304"):
+def materialCards(name="SS304", yieldScale=1.0):
+    """yieldScale: the tabulated yield stresses times this (a test of the
+    yield condition's stress measure: CalculiX yields on the Cauchy stress,
+    this project on the Kirchhoff stress J sigma)."""
     lines = ["*MATERIAL, NAME=%s" % name, "*ELASTIC", "%.6g, %.6g" % (E, NU),
              "*PLASTIC"]
-    lines += ["%.8g, %.8g" % r for r in swiftTable()]
+    lines += ["%.8g, %.8g" % (yieldScale*r[0], r[1]) for r in swiftTable()]
     return lines
 
 
