@@ -23,7 +23,11 @@ Description
         update() false and the reason names the singular matrix, for
         'reuse yes' and 'no'; then a regular matrix of the same pattern
         factorises and solves again to 1e-13;
-      - a bad strategy, ordering or maxReuseIterations: FatalIOError.
+      - a bad strategy, ordering or maxReuseIterations: FatalIOError;
+      - the default without a 'type' (linearSolver::New): eigenLU for a
+        2-D operator of 9 999 cells, umfpack for 10 000 (the default
+        nestedDissectionCells), eigenLU again for 10 000 cells with
+        nestedDissectionCells 20000.
 
 \*---------------------------------------------------------------------------*/
 
@@ -181,6 +185,17 @@ void singular()
 }
 
 
+//- The description of the default solver for a 2-D operator of nx x ny
+//  cells
+std::string defaultFor(const label nx, const label ny, const std::string& e)
+{
+    autoPtr<blockSparseMatrix> M =
+        eo::build(eo::grid{nx, ny, 1, 0.01}, 2e11, 0.3);
+    solverDict d(e);
+    return linearSolver::New(d(), M())->description();
+}
+
+
 bool throwsError(const std::string& entries, const blockSparseMatrix& M)
 {
     try
@@ -217,6 +232,27 @@ int main(int argc, char* argv[])
 
     Info<< "2 x 2 singular, then regular" << endl;
     singular();
+
+    Info<< "Default solver by the cell count" << endl;
+    const std::string below = defaultFor(99, 101, "");
+    const std::string at = defaultFor(100, 100, "");
+    const std::string raised =
+        defaultFor(100, 100, "nestedDissectionCells 20000;");
+    unitTest::checkTrue
+    (
+        "9 999 cells: eigenLU (" + below + ")",
+        below.find("Eigen") != std::string::npos
+    );
+    unitTest::checkTrue
+    (
+        "10 000 cells: umfpack (" + at + ")",
+        at.find("UMFPACK") != std::string::npos
+    );
+    unitTest::checkTrue
+    (
+        "10 000 cells, nestedDissectionCells 20000: eigenLU (" + raised + ")",
+        raised.find("Eigen") != std::string::npos
+    );
 
     FatalError.throwExceptions();
     FatalIOError.throwExceptions();
