@@ -51,7 +51,8 @@ Foam::autoPtr<Foam::linearSolver> Foam::linearSolver::New
         // solver with multigrid. Serial, from nestedDissectionCells on,
         // UMFPACK with METIS: its fill grows slower than Eigen's COLAMD's
         // ([S16]; on the ring wedge 0.73 times eigenLU's CPU per Newton
-        // iteration at 24 576 cells, 1.1 times at 6 144, 2 times at 1 536)
+        // iteration at 24 576 cells, 1.2-1.35 times at 6 144, 1.1 times at
+        // 1 536)
         const label directCellLimit =
             dict.lookupOrDefault<label>("directCellLimit", 50000);
         const label nestedDissectionCells =
