@@ -152,7 +152,7 @@ Foam::linearSolvers::umfpackLU::umfpackLU
     numeric_(nullptr),
     factorised_(false),
     factorsCurrent_(false),
-    reuse_(dict.lookupOrDefault<bool>("reuse", false)),
+    reuse_(dict.lookupOrDefault<bool>("reuse", true)),
     maxReuseIterations_
     (
         dict.lookupOrDefault<label>("maxReuseIterations", 10)
