@@ -444,11 +444,12 @@ void Foam::totalLagrangianSolid::shiftDiagonal()
 
 Foam::string Foam::totalLagrangianSolid::failure() const
 {
+    const string why(linearSolver_->updateFailure());
     return
         "the Jacobian could not be factorised (singular) by the linear"
         " solver " + linearSolver_->description() + ", sub-dictionary"
         " linearSolver of " + mesh_.solutionDict().name()
-      + "/solid";
+      + "/solid" + (why.empty() ? string() : ": " + why);
 }
 
 

@@ -19,16 +19,6 @@ namespace linearSolvers
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::linearSolvers::kluLU::gather()
-{
-    const scalarList& v = matrix_.values();
-    forAll(v, i)
-    {
-        values_[toColumns_[i]] = v[i];
-    }
-}
-
-
 bool Foam::linearSolvers::kluLU::factorise()
 {
     if (numeric_)
@@ -37,7 +27,7 @@ bool Foam::linearSolvers::kluLU::factorise()
     }
     numeric_ = klu_factor
     (
-        colStart_.data(), rowIndex_.data(), values_.data(), symbolic_,
+        colStart(), rowIndex(), values(), symbolic_,
         &common_
     );
     refactored_ = false;
@@ -45,8 +35,8 @@ bool Foam::linearSolvers::kluLU::factorise()
     if (debug && factorsCurrent_)
     {
         // the fill decides the cost of every (re)factorisation
-        Info<< "        klu: " << colStart_.size() - 1 << " unknowns, "
-            << colStart_.back() << " entries, factors L "
+        Info<< "        klu: " << columns_.n() << " unknowns, "
+            << columns_.nnz() << " entries, factors L "
             << numeric_->lnz << " U " << numeric_->unz << ", "
             << common_.flops << " flops, " << symbolic_->nblocks
             << " diagonal blocks" << endl;
@@ -80,6 +70,7 @@ Foam::linearSolvers::kluLU::kluLU
 )
 :
     linearSolver(dict, matrix),
+    columns_(matrix),
     symbolic_(nullptr),
     numeric_(nullptr),
     factorsCurrent_(false),
@@ -105,62 +96,15 @@ Foam::linearSolvers::kluLU::kluLU
             << exit(FatalIOError);
     }
 
-    // The compressed columns of the pattern and where each block entry
-    // goes: entries counted per column, then placed row by row (so each
-    // column's rows come out sorted)
-    const label nc = matrix.nComponents();
-    const label n = matrix.nLocalUnknowns();
-    const label lo = matrix.cellNumbering().offset(Pstream::myProcNo());
-    const labelList& rowStart = matrix.rowStart();
-    const labelList& colCells = matrix.colCells();
-
-    colStart_.assign(n + 1, 0);
-    for (label r = 0; r < matrix.nRows(); ++r)
-    {
-        for (label s = rowStart[r]; s < rowStart[r + 1]; ++s)
-        {
-            const label c = colCells[s] - lo;
-            for (label b = 0; b < nc; ++b)
-            {
-                colStart_[c*nc + b + 1] += nc;
-            }
-        }
-    }
-    for (label j = 0; j < n; ++j)
-    {
-        colStart_[j + 1] += colStart_[j];
-    }
-    const label nnz = colStart_[n];
-    rowIndex_.assign(nnz, 0);
-    values_.assign(nnz, 0);
-    toColumns_.assign(matrix.values().size(), 0);
-    std::vector<int> next(colStart_.begin(), colStart_.end() - 1);
-    for (label r = 0; r < matrix.nRows(); ++r)
-    {
-        for (label a = 0; a < nc; ++a)
-        {
-            for (label s = rowStart[r]; s < rowStart[r + 1]; ++s)
-            {
-                const label c = colCells[s] - lo;
-                for (label b = 0; b < nc; ++b)
-                {
-                    const int k = next[c*nc + b]++;
-                    rowIndex_[k] = r*nc + a;
-                    toColumns_[(s*nc + a)*nc + b] = k;
-                }
-            }
-        }
-    }
-
     klu_defaults(&common_);
     symbolic_ = klu_analyze
     (
-        n, colStart_.data(), rowIndex_.data(), &common_
+        columns_.n(), colStart(), rowIndex(), &common_
     );
     if (!symbolic_)
     {
         FatalErrorInFunction
-            << "KLU could not analyse the pattern of " << n
+            << "KLU could not analyse the pattern of " << columns_.n()
             << " unknowns (status " << common_.status << ")"
             << abort(FatalError);
     }
@@ -195,7 +139,7 @@ Foam::string Foam::linearSolvers::kluLU::description() const
 
 bool Foam::linearSolvers::kluLU::update()
 {
-    gather();
+    columns_.gather(matrix_);
     if (fresh_ || !numeric_)
     {
         fresh_ = false;
@@ -207,7 +151,7 @@ bool Foam::linearSolvers::kluLU::update()
     factorsCurrent_ =
         klu_refactor
         (
-            colStart_.data(), rowIndex_.data(), values_.data(), symbolic_,
+            colStart(), rowIndex(), values(), symbolic_,
             numeric_, &common_
         ) == 1
      && common_.status == KLU_OK;
