@@ -8,6 +8,7 @@
 #   converged: <n> Newton iterations, <k> Krylov iterations, <r> residual
 #       evaluations, force residual <f>, <s> s
 #   Linear solver: <name> (<why the default chose it>)
+#   Linear solver petsc: the set-up failed with ...: <what it does now>
 # A converged step's Newton iterations include those of its Jacobian-free
 # retry (the solver's count); the iterations of attempts that ended in a
 # cut-back are counted apart (wastedNewton).
@@ -20,7 +21,8 @@ import re
 def stats(logFile):
     """A dict: steps, newtonMean, newtonMax, newtonTotal, wastedNewton,
     krylovTotal, krylovPerNewton, retries, cutBacks, stepWall (the sum of
-    the steps' clock times), linearSolver, cells, endReached, lastTime"""
+    the steps' clock times), linearSolver, cells, endReached, lastTime (of
+    the last attempt), setUpFailures and the first one's message"""
     text = open(logFile, errors="replace").read()
     conv = re.findall(r"^ *converged: (\d+) Newton iterations, (\d+) Krylov"
                       r" iterations, (\d+) residual evaluations, force "
@@ -29,7 +31,10 @@ def stats(logFile):
     krylov = sum(int(c[1]) for c in conv)
     times = re.findall(r"^Time = (\S+), deltaT", text, re.M)
     m = re.search(r"^Linear solver: (\S+)", text, re.M)
-    cells = re.search(r"(\d+) cells, law", text)
+    cells = re.search(r"^Total Lagrangian solid: .*?(\d+) cells", text,
+                      re.M)
+    setUp = re.findall(r"^Linear solver \S+: the set-up failed (.*)$", text,
+                       re.M)
     st = {
         "steps": len(newton),
         "newtonTotal": sum(newton),
@@ -49,5 +54,7 @@ def stats(logFile):
         "endReached": bool(re.search(r"^Steps: \d+, Newton iterations",
                                      text, re.M)),
         "lastTime": float(times[-1]) if times else 0.0,
+        "setUpFailures": len(setUp),
+        "setUpFailure": setUp[0].strip() if setUp else "",
     }
     return st
