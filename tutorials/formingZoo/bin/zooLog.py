@@ -3,6 +3,7 @@
 # (largeStrainSolidFoam's lines, applications/solvers/largeStrainSolidFoam):
 #   Time = <t>, deltaT = <dt>                 an attempt at a load step
 #   retrying the step without the predictor, Jacobian-free
+#   accepted: Newton stalled at force residual <f> (acceptableForceTolerance)
 #   step not converged (<why>) after <n> Newton iterations, ...
 #   cutting the time step back to <dt> s and retrying (<i> of <max>)
 #   converged: <n> Newton iterations, <k> Krylov iterations, <r> residual
@@ -20,7 +21,8 @@ import re
 
 def stats(logFile):
     """A dict: steps, newtonMean, newtonMax, newtonTotal, wastedNewton,
-    krylovTotal, krylovPerNewton, retries, cutBacks, stepWall (the sum of
+    krylovTotal, krylovPerNewton, retries, cutBacks, accepted (steps
+    taken at acceptableForceTolerance), stepWall (the sum of
     the steps' clock times), linearSolver, cells, endReached, lastTime (of
     the last attempt), setUpFailures and the first one's message"""
     text = open(logFile, errors="replace").read()
@@ -48,6 +50,7 @@ def stats(logFile):
         "retries": len(re.findall(r"retrying the step without the "
                                   r"predictor", text)),
         "cutBacks": len(re.findall(r"cutting the time step back", text)),
+        "accepted": len(re.findall(r"accepted: Newton stalled", text)),
         "stepWall": sum(float(c[3]) for c in conv),
         "linearSolver": m.group(1) if m else "?",
         "cells": int(cells.group(1)) if cells else 0,
