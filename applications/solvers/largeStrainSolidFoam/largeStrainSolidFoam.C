@@ -36,6 +36,9 @@ Description
 #include "clockTime.H"
 #include "writeSchedule.H"
 #include "keepFreedMemory.H"
+#include "timeControls.H"
+#include "caseLock.H"
+#include "timeDirectoryWriter.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -50,7 +53,15 @@ int main(int argc, char *argv[])
     keepFreedMemory();
 
     #include "setRootCase.H"
+
+    // [S20] controls Time would divide by, one run per case, a start time
+    // that was written completely
+    checkTimeControls(args);
     #include "createTime.H"
+    const caseLock lock(runTime, args.executable());
+    timeDirectoryWriter::selectStartTime(runTime);
+    timeDirectoryWriter writer(runTime);
+
     #include "createMesh.H"
     #include "createFields.H"
     #include "readSolidControls.H"
@@ -74,19 +85,26 @@ int main(int argc, char *argv[])
                 IOstream::UNCOMPRESSED, true
             )
         );
+        if (!perfFile().good())
+        {
+            FatalErrorInFunction
+                << "Cannot write " << perfFile().name() << " (is the case"
+                << " folder writable?)" << nl << exit(FatalError);
+        }
         perfFile()
             << "# time deltaT newtonIterations krylovIterations"
             << " residualEvaluations forceResidual cutBacks wallTime" << nl;
     }
 
-    // Write the last converged state with what a restart needs [S19]
+    // Write the last converged state with what a restart needs [S19],
+    // the restart record last: it marks the directory complete [S20]
     auto writeNow = [&]()
     {
         output.update();
         restartState.set("time", runTime.value());
         restartState.set("timeStepController", controller.state());
         restartState.set("solid", solid.state());
-        runTime.writeNow();
+        writer.write(restartState);
     };
 
     Eigen::VectorXd x, xStart;

@@ -7,6 +7,7 @@ License
 #include "volFields.H"
 #include "IOdictionary.H"
 #include "bodyLaws.H"
+#include "solidRestartState.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -97,6 +98,52 @@ void Foam::contactFaces::readState
 }
 
 
+void Foam::contactFaces::requireState(const dictionary& dict) const
+{
+    // [S20] at a restart every entry of the face state written with the
+    // time: the law's state, the face displacement, the dissipated
+    // energy, the multipliers
+    DynamicList<word> missing;
+    for (const frictionStateEntry& e : layout_.entries())
+    {
+        if
+        (
+            e.write && !dict.found(e.name)
+         && (e.oldName.empty() || !dict.found(e.oldName))
+        )
+        {
+            missing.append(e.name);
+        }
+    }
+    wordList always({"value", "dissipatedEnergy"});
+    if (augmented_)
+    {
+        always.append("normalMultiplier");
+    }
+    for (const word& key : always)
+    {
+        if (!dict.found(key))
+        {
+            missing.append(key);
+        }
+    }
+    if (missing.size())
+    {
+        const Time& runTime = contactPatch().boundaryMesh().mesh().time();
+        FatalIOErrorInFunction(dict)
+            << "Restart from time " << runTime.timeName() << ": patch "
+            << contactPatch().name() << " in " << dict.name() << " has no "
+            << (missing.size() > 1 ? "keywords " : "keyword ")
+            << wordList(missing) << ", the face state of the contact (law "
+            << lawDict_.get<word>("type") << ") written with every time"
+            << " directory, which the next step starts from. The time"
+            << " directory " << runTime.timePath() << " was edited or"
+            << " written by another law; restore it, or restart from another"
+            << " complete time" << nl << exit(FatalIOError);
+    }
+}
+
+
 void Foam::contactFaces::readAugmentation(const dictionary& dict)
 {
     augmented_ = dict.found("augmentedLagrangian");
@@ -175,6 +222,10 @@ void Foam::contactFaces::readContactFaces(const dictionary& dict)
     if (p.boundaryMesh().mesh().foundObject<IOdictionary>("mechanicalProperties"))
     {
         createLaw();
+        if (solidRestartState::expected(p.boundaryMesh().mesh().time()))
+        {
+            requireState(dict);
+        }
         readState(dict, law_());
     }
     else
