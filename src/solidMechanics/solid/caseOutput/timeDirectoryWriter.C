@@ -11,6 +11,7 @@ License
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <sstream>
 #include <unistd.h>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -199,6 +200,8 @@ Foam::timeDirectoryWriter::timeDirectoryWriter(const Time& runTime)
     runTime_(runTime),
     faultKind_(),
     faultAfter_(-1),
+    faultDir_(1),
+    nDirs_(0),
     nWritten_(0),
     purge_
     (
@@ -209,19 +212,30 @@ Foam::timeDirectoryWriter::timeDirectoryWriter(const Time& runTime)
     const std::string hook(getEnv("TRIBOFOAM_WRITE_FAULT"));
     if (!hook.empty())
     {
-        IStringStream is(hook);
-        is >> faultKind_ >> faultAfter_;
-        if ((faultKind_ != "kill" && faultKind_ != "fail") || faultAfter_ < 0)
+        std::istringstream is(hook);
+        std::string kind;
+        is >> kind >> faultAfter_;
+        faultKind_ = kind;
+        if (!(is >> faultDir_))
+        {
+            faultDir_ = 1;
+        }
+        if
+        (
+            (faultKind_ != "kill" && faultKind_ != "fail")
+         || faultAfter_ < 0 || faultDir_ < 1
+        )
         {
             FatalErrorInFunction
-                << "Environment variable TRIBOFOAM_WRITE_FAULT is '" << hook
-                << "'; expected 'kill N' or 'fail N' with N >= 0 (a test"
-                << " hook: stop the writer after N files)" << nl
+                << "Environment variable TRIBOFOAM_WRITE_FAULT is '"
+                << hook.c_str() << "'; expected 'kill N M' or 'fail N M'"
+                << " with N >= 0, M >= 1 (a test hook: stop the writer after"
+                << " N files of the M-th time directory written)" << nl
                 << exit(FatalError);
         }
         Info<< "Test hook TRIBOFOAM_WRITE_FAULT: " << faultKind_
-            << " after " << faultAfter_ << " files of a time directory"
-            << endl;
+            << " after " << faultAfter_ << " files of time directory "
+            << faultDir_ << " written" << endl;
     }
 }
 
@@ -278,6 +292,8 @@ void Foam::timeDirectoryWriter::write(regIOobject& marker)
     const fileName dir = runTime_.timePath();
     const fileName markerFile = markerPath(runTime_, runTime_.timeName());
     nWritten_ = 0;
+    ++nDirs_;
+    const bool faulty = nDirs_ == faultDir_;
 
     // [S20] a directory written again loses its mark first
     if (isFile(markerFile, false) && !rm(markerFile))
@@ -289,13 +305,13 @@ void Foam::timeDirectoryWriter::write(regIOobject& marker)
     auto writeFile = [&](const std::function<bool()>& writer,
                          const std::function<fileName()>& path)
     {
-        if (nWritten_ == faultAfter_ && faultKind_ == "kill")
+        if (faulty && nWritten_ == faultAfter_ && faultKind_ == "kill")
         {
             Info<< "TRIBOFOAM_WRITE_FAULT: killed after " << nWritten_
                 << " files of " << dir << endl;
             ::kill(::getpid(), SIGKILL);
         }
-        if (nWritten_ == faultAfter_ && faultKind_ == "fail")
+        if (faulty && nWritten_ == faultAfter_ && faultKind_ == "fail")
         {
             fail(path(), "TRIBOFOAM_WRITE_FAULT: a simulated failure");
         }
