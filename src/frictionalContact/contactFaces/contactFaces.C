@@ -133,8 +133,13 @@ void Foam::contactFaces::requireState(const dictionary& dict) const
         FatalIOErrorInFunction(dict)
             << "Restart from time " << runTime.timeName() << ": patch "
             << contactPatch().name() << " in " << dict.name() << " has no "
-            << (missing.size() > 1 ? "keywords " : "keyword ")
-            << wordList(missing) << ", the face state of the contact (law "
+            << (missing.size() > 1 ? "keywords" : "keyword");
+        for (const word& key : missing)
+        {
+            FatalIOError<< " '" << key.c_str() << "'";
+        }
+        FatalIOError
+            << ", the face state of the contact (law "
             << lawDict_.get<word>("type") << ") written with every time"
             << " directory, which the next step starts from. The time"
             << " directory " << runTime.timePath() << " was edited or"

@@ -330,10 +330,16 @@ void Foam::timeDirectoryWriter::write(regIOobject& marker)
     collect(runTime_, marker, objects);
     for (const regIOobject* obj : objects)
     {
+        // the path at this time (objectPath() names the last instance
+        // until the object is written)
+        const fileName path
+        (
+            dir/obj->db().dbDir()/obj->local()/obj->name()
+        );
         writeFile
         (
             [&]() { return obj->write(); },
-            [&]() { return obj->objectPath(); }
+            [&]() { return path; }
         );
     }
 
