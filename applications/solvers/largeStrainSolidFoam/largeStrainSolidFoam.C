@@ -22,7 +22,11 @@ Description
     not converge are cut back and retried (timeStepController); the run
     stops with a message after maxCutBacks consecutive failures, keeping
     the last converged time directory. A restart from any written time
-    takes the same steps as the uninterrupted run.
+    takes the same steps as the uninterrupted run. A time directory is
+    complete when its uniform/solidState, written last, is there; a
+    restart from latestTime steps back from an incomplete one, a restart
+    missing a history field stops naming it, and one run at a time uses a
+    case folder (doc/theory.md [S20]).
 
 \*---------------------------------------------------------------------------*/
 
