@@ -26,7 +26,7 @@ Description
     complete when its uniform/solidState, written last, is there; a
     restart from latestTime steps back from an incomplete one, a restart
     missing a history field stops naming it, and one run at a time uses a
-    case folder (doc/theory.md [S20]).
+    case folder (doc/theory.md [S19b]).
 
 \*---------------------------------------------------------------------------*/
 
@@ -58,7 +58,7 @@ int main(int argc, char *argv[])
 
     #include "setRootCase.H"
 
-    // [S20] controls Time would divide by, one run per case, a start time
+    // [S19b] controls Time would divide by, one run per case, a start time
     // that was written completely
     checkTimeControls(args);
     #include "createTime.H"
@@ -101,7 +101,7 @@ int main(int argc, char *argv[])
     }
 
     // Write the last converged state with what a restart needs [S19],
-    // the restart record last: it marks the directory complete [S20]
+    // the restart record last: it marks the directory complete [S19b]
     auto writeNow = [&]()
     {
         output.update();

@@ -57,7 +57,7 @@ void Foam::frictionParameters::check
             << exit(FatalIOError);
     }
 
-    // [F35] a magnitude the law's arithmetic keeps finite
+    // [F2b] a magnitude the law's arithmetic keeps finite
     const scalar m = mag(value);
     if (m != 0 && !(m >= representable.first() && m <= representable.second()))
     {

@@ -100,7 +100,7 @@ void Foam::contactFaces::readState
 
 void Foam::contactFaces::requireState(const dictionary& dict) const
 {
-    // [S20] at a restart every entry of the face state written with the
+    // [S19b] at a restart every entry of the face state written with the
     // time: the law's state, the face displacement, the dissipated
     // energy, the multipliers
     DynamicList<word> missing;

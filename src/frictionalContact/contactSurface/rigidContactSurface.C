@@ -97,7 +97,7 @@ Foam::rigidContactSurface::rigidContactSurface
      && solidRestartState::expected(p.boundaryMesh().mesh().time())
     )
     {
-        // [S20] without them the restart's gaps differ in the last bit
+        // [S19b] without them the restart's gaps differ in the last bit
         FatalIOErrorInFunction(dict)
             << "Restart from time "
             << p.boundaryMesh().mesh().time().timeName() << ": patch "

@@ -82,7 +82,7 @@ bool Foam::timeDirectoryWriter::endsComplete(const fileName& path)
 
 void Foam::timeDirectoryWriter::selectStartTime(Time& runTime)
 {
-    // [S20] the time directories of this processor, constant left out
+    // [S19b] the time directories of this processor, constant left out
     DynamicList<instant> dirs;
     for (const instant& t : runTime.times())
     {
@@ -295,7 +295,7 @@ void Foam::timeDirectoryWriter::write(regIOobject& marker)
     ++nDirs_;
     const bool faulty = nDirs_ == faultDir_;
 
-    // [S20] a directory written again loses its mark first
+    // [S19b] a directory written again loses its mark first
     if (isFile(markerFile, false) && !rm(markerFile))
     {
         fail(markerFile, "the old mark could not be removed");

@@ -397,7 +397,7 @@ Foam::solidDiscretisation::solidDiscretisation
     epsilonPf_.writeOpt() = historyWrite;
     if (laws.plastic())
     {
-        // [S20] a restart without the history would start it virgin
+        // [S19b] a restart without the history would start it virgin
         solidRestartState::require
         (
             mesh_, "CpInv", "the plastic history (inverse plastic right"

@@ -146,7 +146,7 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
     // Constructing from a tmp drops the write option
     Dprevious_.writeOpt() = IOobject::AUTO_WRITE;
 
-    // [S20] without it a restart's predictor and inertia term differ
+    // [S19b] without it a restart's predictor and inertia term differ
     solidRestartState::require
     (
         mesh, "Dprevious", "the displacement of the step before"
