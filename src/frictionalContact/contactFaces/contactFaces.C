@@ -4,10 +4,10 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "contactFaces.H"
+#include "solidRestartState.H"
 #include "volFields.H"
 #include "IOdictionary.H"
 #include "bodyLaws.H"
-#include "solidRestartState.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
