@@ -22,7 +22,11 @@ Description
     not converge are cut back and retried (timeStepController); the run
     stops with a message after maxCutBacks consecutive failures, keeping
     the last converged time directory. A restart from any written time
-    takes the same steps as the uninterrupted run.
+    takes the same steps as the uninterrupted run. A time directory is
+    complete when its uniform/solidState, written last, is there; a
+    restart from latestTime steps back from an incomplete one, a restart
+    missing a history field stops naming it, and one run at a time uses a
+    case folder (doc/theory.md [S19b]).
 
 \*---------------------------------------------------------------------------*/
 
@@ -36,6 +40,9 @@ Description
 #include "clockTime.H"
 #include "writeSchedule.H"
 #include "keepFreedMemory.H"
+#include "timeControls.H"
+#include "caseLock.H"
+#include "timeDirectoryWriter.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -50,7 +57,15 @@ int main(int argc, char *argv[])
     keepFreedMemory();
 
     #include "setRootCase.H"
+
+    // [S19b] controls Time would divide by, one run per case, a start time
+    // that was written completely
+    checkTimeControls(args);
     #include "createTime.H"
+    const caseLock lock(runTime, args.executable());
+    timeDirectoryWriter::selectStartTime(runTime);
+    timeDirectoryWriter writer(runTime);
+
     #include "createMesh.H"
     #include "createFields.H"
     #include "readSolidControls.H"
@@ -74,19 +89,26 @@ int main(int argc, char *argv[])
                 IOstream::UNCOMPRESSED, true
             )
         );
+        if (!perfFile().good())
+        {
+            FatalErrorInFunction
+                << "Cannot write " << perfFile().name() << " (is the case"
+                << " folder writable?)" << nl << exit(FatalError);
+        }
         perfFile()
             << "# time deltaT newtonIterations krylovIterations"
             << " residualEvaluations forceResidual cutBacks wallTime" << nl;
     }
 
-    // Write the last converged state with what a restart needs [S19]
+    // Write the last converged state with what a restart needs [S19],
+    // the restart record last: it marks the directory complete [S19b]
     auto writeNow = [&]()
     {
         output.update();
         restartState.set("time", runTime.value());
         restartState.set("timeStepController", controller.state());
         restartState.set("solid", solid.state());
-        runTime.writeNow();
+        writer.write(restartState);
     };
 
     Eigen::VectorXd x, xStart;

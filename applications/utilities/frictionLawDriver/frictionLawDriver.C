@@ -87,6 +87,7 @@ int main(int argc, char *argv[])
     (
         dict.getOrDefault<fileName>("output", "frictionLawDriver.dat")
     );
+    driverModes::checkWritable(dict, "output", output);
 
     // Modes that build their laws themselves (or need none)
     if (mode == "identification")

@@ -17,6 +17,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "driverModes.H"
+#include "checkedFunction1.H"
 #include "frictionPointDriver.H"
 #include "OFstream.H"
 
@@ -82,6 +83,7 @@ static void writeRows
             << dict.get<scalar>("contactPressure") << nl;
         drv.writeHeader(os, springSlider);
         drv.write(os, rows, springSlider);
+        driverModes::checkWritten(os);
     }
     Info<< "Wrote " << rows.size() << " rows to " << output << endl;
 
@@ -135,7 +137,7 @@ void Foam::driverModes::prescribed
     const pointHistory h(dict);
     const scalar p = h.p;
     const dictionary& d = dict.subDict("prescribed");
-    autoPtr<Function1<scalar>> v = Function1<scalar>::New("slipRate", d);
+    autoPtr<Function1<scalar>> v = checkedFunction1<scalar>("slipRate", d);
 
     frictionPointDriver drv(law, p);
     drv.setShearYield(shearYield(dict, law));
@@ -175,7 +177,7 @@ void Foam::driverModes::springSlider
     const scalar M = d.found("mass") ? nonNegative(d, "mass") : 0;
     const scalar k = nonNegative(d, "stiffness", true);
     autoPtr<Function1<scalar>> V =
-        Function1<scalar>::New("loadPointVelocity", d);
+        checkedFunction1<scalar>("loadPointVelocity", d);
 
     frictionPointDriver drv(law, p);
     drv.setShearYield(shearYield(dict, law));

@@ -14,6 +14,12 @@ License
 #include "error.H"
 #include "scalarList.H"
 
+const Foam::Pair<Foam::scalar> Foam::frictionParameters::representable
+(
+    1e-30, 1e30
+);
+
+
 void Foam::frictionParameters::check
 (
     const dictionary& dict,
@@ -49,6 +55,18 @@ void Foam::frictionParameters::check
         FatalIOError
             << ", got " << value << " (dictionary " << dict.name() << ")"
             << exit(FatalIOError);
+    }
+
+    // [F2b] a magnitude the law's arithmetic keeps finite
+    const scalar m = mag(value);
+    if (m != 0 && !(m >= representable.first() && m <= representable.second()))
+    {
+        FatalIOErrorInFunction(dict)
+            << "keyword '" << key << "' is " << value << ", outside the"
+            << " magnitudes the law's arithmetic keeps finite: expected 0 or "
+            << representable.first() << " <= |" << key << "| <= "
+            << representable.second() << " (dictionary " << dict.name()
+            << ")" << exit(FatalIOError);
     }
 }
 
@@ -128,6 +146,11 @@ Foam::Pair<Foam::scalar> Foam::frictionParameters::range
             key, scalarList({deflt.first(), deflt.second()})
         )
     );
+    if (r.size() == 2)
+    {
+        check(dict, key, r[0], 0, none);
+        check(dict, key, r[1], 0, none);
+    }
     if (r.size() != 2 || !(r[0] > 0) || !(r[1] > r[0]))
     {
         FatalIOErrorInFunction(dict)

@@ -4,6 +4,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "contactFaces.H"
+#include "solidRestartState.H"
 #include "volFields.H"
 #include "IOdictionary.H"
 #include "bodyLaws.H"
@@ -224,6 +225,57 @@ void Foam::contactFaces::readState
 }
 
 
+void Foam::contactFaces::requireState(const dictionary& dict) const
+{
+    // [S19b] at a restart every entry of the face state written with the
+    // time: the law's state, the face displacement, the dissipated
+    // energy, the multipliers
+    DynamicList<word> missing;
+    for (const frictionStateEntry& e : layout_.entries())
+    {
+        if
+        (
+            e.write && !dict.found(e.name)
+         && (e.oldName.empty() || !dict.found(e.oldName))
+        )
+        {
+            missing.append(e.name);
+        }
+    }
+    wordList always({"value", "dissipatedEnergy"});
+    if (augmented_)
+    {
+        always.append("normalMultiplier");
+    }
+    for (const word& key : always)
+    {
+        if (!dict.found(key))
+        {
+            missing.append(key);
+        }
+    }
+    if (missing.size())
+    {
+        const Time& runTime = contactPatch().boundaryMesh().mesh().time();
+        FatalIOErrorInFunction(dict)
+            << "Restart from time " << runTime.timeName() << ": patch "
+            << contactPatch().name() << " in " << dict.name() << " has no "
+            << (missing.size() > 1 ? "keywords" : "keyword");
+        for (const word& key : missing)
+        {
+            FatalIOError<< " '" << key.c_str() << "'";
+        }
+        FatalIOError
+            << ", the face state of the contact (law "
+            << lawDict_.get<word>("type") << ") written with every time"
+            << " directory, which the next step starts from. The time"
+            << " directory " << runTime.timePath() << " was edited or"
+            << " written by another law; restore it, or restart from another"
+            << " complete time" << nl << exit(FatalIOError);
+    }
+}
+
+
 void Foam::contactFaces::readAugmentation(const dictionary& dict)
 {
     // [C5c] on by default with the automatic (soft) penalty; an explicit
@@ -322,6 +374,10 @@ void Foam::contactFaces::readContactFaces(const dictionary& dict)
     if (p.boundaryMesh().mesh().foundObject<IOdictionary>("mechanicalProperties"))
     {
         createLaw();
+        if (solidRestartState::expected(p.boundaryMesh().mesh().time()))
+        {
+            requireState(dict);
+        }
         readState(dict, law_());
     }
     else

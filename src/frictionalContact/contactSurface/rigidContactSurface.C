@@ -7,6 +7,8 @@ License
 #include "fvMesh.H"
 #include "volMesh.H"
 #include "Time.H"
+#include "IOdictionary.H"
+#include "solidRestartState.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -84,6 +86,26 @@ Foam::rigidContactSurface::rigidContactSurface
             search_[i].hint = max(tri[i], label(-1));
             search_[i].x0 = x0[i];
         }
+    }
+    else if
+    (
+        obstacle_->cachesSearches()
+     && p.boundaryMesh().mesh().foundObject<IOdictionary>
+        (
+            "mechanicalProperties"
+        )
+     && solidRestartState::expected(p.boundaryMesh().mesh().time())
+    )
+    {
+        // [S19b] without them the restart's gaps differ in the last bit
+        FatalIOErrorInFunction(dict)
+            << "Restart from time "
+            << p.boundaryMesh().mesh().time().timeName() << ": patch "
+            << p.name() << " in " << dict.name() << " has no keywords"
+            << " 'searchTriangle' and 'searchPoint', the obstacle search"
+            << " records ([C2c]) written with every time directory. Restore"
+            << " them, or restart from another complete time" << nl
+            << exit(FatalIOError);
     }
 }
 

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "rigidObstacle.H"
+#include "checkedFunction1.H"
 #include "error.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -79,7 +80,7 @@ Foam::rigidObstacle::rigidObstacle(const dictionary& dict)
 {
     if (dict.found("translation"))
     {
-        translation_ = Function1<vector>::New("translation", dict);
+        translation_ = checkedFunction1<vector>("translation", dict);
         // Build any demand-driven look-up data now: later queries only read
         translation_->value(0);
     }
@@ -91,7 +92,7 @@ Foam::rigidObstacle::rigidObstacle(const dictionary& dict)
 
     if (dict.found("rotationAngle"))
     {
-        rotationAngle_ = Function1<scalar>::New("rotationAngle", dict);
+        rotationAngle_ = checkedFunction1<scalar>("rotationAngle", dict);
         rotationAngle_->value(0);
     }
 }

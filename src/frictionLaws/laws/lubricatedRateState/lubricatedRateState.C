@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "lubricatedRateState.H"
+#include "checkedFunction1.H"
 #include "relaxationStep.H"
 #include "frictionParameters.H"
 #include "addToRunTimeSelectionTable.H"
@@ -45,7 +46,7 @@ Foam::frictionLaws::lubricatedRateState::lubricatedRateState
 {
     if (dict.found("mu0"))
     {
-        mu0Fn_ = Function1<scalar>::New("mu0", dict);
+        mu0Fn_ = checkedFunction1<scalar>("mu0", dict);
     }
     else
     {

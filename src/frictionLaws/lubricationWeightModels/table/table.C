@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "table.H"
+#include "checkedFunction1.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -25,7 +26,7 @@ namespace lubricationWeightModels
 
 Foam::lubricationWeightModels::table::table(const dictionary& dict)
 :
-    alpha_(Function1<scalar>::New("alpha", dict))
+    alpha_(checkedFunction1<scalar>("alpha", dict))
 {
     for (label i = 0; i <= 150; ++i)
     {

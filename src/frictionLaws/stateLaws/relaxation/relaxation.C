@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "relaxation.H"
+#include "checkedFunction1.H"
 #include "relaxationStep.H"
 #include "frictionParameters.H"
 #include "addToRunTimeSelectionTable.H"
@@ -35,7 +36,7 @@ Foam::frictionStateLaws::relaxation::relaxation(const dictionary& dict)
 {
     if (dict.found("phiSs"))
     {
-        phiSs_ = Function1<scalar>::New("phiSs", dict);
+        phiSs_ = checkedFunction1<scalar>("phiSs", dict);
     }
     lnPhiRef_ = std::log(steadyState(VStar_));
 }

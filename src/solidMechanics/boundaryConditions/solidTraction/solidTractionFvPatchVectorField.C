@@ -4,6 +4,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "solidTractionFvPatchVectorField.H"
+#include "checkedFunction1.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -61,11 +62,11 @@ Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
     }
     if (dict.found("traction"))
     {
-        traction_ = Function1<vector>::New("traction", dict);
+        traction_ = checkedFunction1<vector>("traction", dict);
     }
     if (dict.found("pressure"))
     {
-        pressure_ = Function1<scalar>::New("pressure", dict);
+        pressure_ = checkedFunction1<scalar>("pressure", dict);
     }
     if (!traction_.valid() && !pressure_.valid())
     {

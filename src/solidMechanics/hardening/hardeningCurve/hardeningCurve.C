@@ -4,6 +4,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "hardeningCurve.H"
+#include "checkedFunction1.H"
 #include "Constant.H"
 #include "TableBase.H"
 #include <algorithm>
@@ -116,7 +117,7 @@ Foam::hardeningCurve::hardeningCurve
     const dictionary& dict
 )
 :
-    function_(Function1<scalar>::New(keyword, dict)),
+    function_(checkedFunction1<scalar>(keyword, dict)),
     kind_(kind::constant),
     constant_(0),
     swift_(dynamic_cast<const Function1Types::swift*>(function_.get()))

@@ -6,6 +6,7 @@ License
 #include "solidDiscretisation.H"
 #include "calculatedFvPatchFields.H"
 #include "ListListOps.H"
+#include "solidRestartState.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -394,6 +395,20 @@ Foam::solidDiscretisation::solidDiscretisation
         laws.plastic() ? IOobject::AUTO_WRITE : IOobject::NO_WRITE;
     CpInv_.writeOpt() = historyWrite;
     epsilonPf_.writeOpt() = historyWrite;
+    if (laws.plastic())
+    {
+        // [S19b] a restart without the history would start it virgin
+        solidRestartState::require
+        (
+            mesh_, "CpInv", "the plastic history (inverse plastic right"
+            " Cauchy-Green tensor at faces)"
+        );
+        solidRestartState::require
+        (
+            mesh_, "epsilonPf", "the plastic history (equivalent plastic"
+            " strain at faces)"
+        );
+    }
 
     const dictionary& schemes = mesh_.schemesDict();
     const word d2dt2(schemes.subDict("d2dt2Schemes").get<word>("default"));

@@ -153,6 +153,14 @@ void Foam::solidOutputFields::report() const
             }
             os  << mesh.time().value() << ' ' << total.x() << ' '
                 << total.y() << ' ' << total.z() << nl;
+            os.flush();
+            if (!os.good())
+            {
+                FatalErrorInFunction
+                    << "Writing " << file << " failed (the disk may be"
+                    << " full or the folder not writable)" << nl
+                    << exit(FatalError);
+            }
         }
     }
 

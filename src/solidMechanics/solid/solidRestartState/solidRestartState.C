@@ -18,11 +18,42 @@ Foam::solidRestartState::solidRestartState(const Time& runTime)
             "uniform",
             runTime,
             IOobject::READ_IF_PRESENT,
-            IOobject::AUTO_WRITE
+            IOobject::NO_WRITE
         )
     ),
     read_(found("time"))
 {}
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+bool Foam::solidRestartState::expected(const Time& runTime)
+{
+    return isFile(runTime.timePath()/"uniform"/"solidState", false);
+}
+
+
+void Foam::solidRestartState::require
+(
+    const objectRegistry& db,
+    const word& name,
+    const string& holds
+)
+{
+    const Time& runTime = db.time();
+    const IOobject io(name, runTime.timeName(), db);
+    if (!expected(runTime) || isFile(io.objectPath()))
+    {
+        return;
+    }
+    FatalErrorInFunction
+        << "Restart from time " << runTime.timeName() << ": the file "
+        << io.objectPath() << " is missing from the time directory "
+        << runTime.timePath() << ". It holds " << holds.c_str() << ", which"
+        << " the next step starts from: without it the run would not"
+        << " continue the one written. Restore the file, or restart from"
+        << " another complete time" << nl << exit(FatalError);
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

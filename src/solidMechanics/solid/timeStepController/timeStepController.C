@@ -22,7 +22,8 @@ Foam::timeStepController::timeStepController
     predictor_(dict.lookupOrDefault<bool>("predictor", true)),
     deltaT_(userDeltaT),
     nFailures_(0),
-    retrying_(false)
+    retrying_(false),
+    stoppedBySize_(false)
 {
     if
     (
@@ -70,6 +71,7 @@ Foam::timeStepController::action Foam::timeStepController::failed
     const bool tooSmall = cutBackFactor_*dt < minDeltaTRatio_*userDeltaT_;
     if (nFailures_ > maxCutBacks_ || tooSmall)
     {
+        stoppedBySize_ = nFailures_ <= maxCutBacks_;
         return STOP;
     }
     deltaT_ = cutBackFactor_*dt;
@@ -92,7 +94,16 @@ Foam::string Foam::timeStepController::stopMessage
     OStringStream os;
     os  << "The step to time " << failedTime << " did not converge after "
         << nFailures_ - 1 << " cut-backs of the time step (last deltaT "
-        << failedDeltaT << " s, reason: " << reason.c_str() << ")." << nl
+        << failedDeltaT << " s, reason: " << reason.c_str() << ")";
+    if (stoppedBySize_)
+    {
+        // not the cut-back limit: the smallest step allowed
+        os  << ": a further cut-back, to " << cutBackFactor_*failedDeltaT
+            << " s, would be below minDeltaTRatio " << minDeltaTRatio_
+            << " times deltaT " << userDeltaT_ << " s of controlDict"
+            << " (maxCutBacks " << maxCutBacks_ << " not reached)";
+    }
+    os  << "." << nl
         << "The last converged time, " << t0 << ", is written"
         << (t0IsStartTime ? " (the start time: no step converged);" : ";")
         << " check the loading, the boundary conditions and the solid"

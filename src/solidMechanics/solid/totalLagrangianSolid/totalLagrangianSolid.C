@@ -6,6 +6,7 @@ License
 #include "totalLagrangianSolid.H"
 #include "calculatedFvPatchFields.H"
 #include "cpuTime.H"
+#include "solidRestartState.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -144,6 +145,12 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
 {
     // Constructing from a tmp drops the write option
     Dprevious_.writeOpt() = IOobject::AUTO_WRITE;
+
+    // [S19b] without it a restart's predictor and inertia term differ
+    solidRestartState::require
+    (
+        mesh, "Dprevious", "the displacement of the step before"
+    );
 
     jacobian_.setCoordinates(mesh.C().primitiveField());
 

@@ -1,0 +1,149 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "caseLock.H"
+#include "OSspecific.H"
+#include "Pstream.H"
+#include <cerrno>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The lock this process holds, removed at exit
+std::string heldLock;
+
+void releaseLock()
+{
+    if (!heldLock.empty())
+    {
+        ::unlink(heldLock.c_str());
+        heldLock.clear();
+    }
+}
+
+//- Create the lock file exclusively with "host pid"; false if it exists
+bool createLock(const std::string& path, const std::string& content)
+{
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
+    if (fd < 0)
+    {
+        return false;
+    }
+    const ssize_t n = ::write(fd, content.data(), content.size());
+    ::close(fd);
+    return n == ssize_t(content.size());
+}
+
+//- Is the process pid of this host running the application?
+bool running(const long pid, const std::string& application)
+{
+    if (pid <= 0 || (::kill(pid_t(pid), 0) != 0 && errno != EPERM))
+    {
+        return false;
+    }
+    // a process id reused by another program is no run of the application
+    std::ifstream comm("/proc/" + std::to_string(pid) + "/comm");
+    std::string name;
+    if (comm && std::getline(comm, name))
+    {
+        // comm holds at most 15 characters of the name
+        return application.compare(0, name.size(), name) == 0;
+    }
+    return true;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::fileName Foam::caseLock::lockFile
+(
+    const fileName& caseDir,
+    const word& application
+)
+{
+    return caseDir/application + ".lock";
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::caseLock::caseLock(const Time& runTime, const word& application)
+{
+    if (!Pstream::master())
+    {
+        return;
+    }
+    const fileName path(lockFile(runTime.globalPath(), application));
+    const std::string host(hostName());
+    const std::string content =
+        host + ' ' + std::to_string(long(::getpid())) + '\n';
+
+    for (int attempt = 0; attempt < 2; ++attempt)
+    {
+        if (createLock(path, content))
+        {
+            heldLock = path;
+            std::atexit(releaseLock);
+            return;
+        }
+
+        std::ifstream is(path.c_str());
+        std::string lockHost;
+        long pid = -1;
+        is >> lockHost >> pid;
+        if (!is && attempt == 0)
+        {
+            // being created this instant by another run, or empty: look
+            // again once
+            ::sleep(1);
+            is.close();
+            is.open(path.c_str());
+            is >> lockHost >> pid;
+        }
+
+        if (lockHost != host)
+        {
+            FatalErrorInFunction
+                << "The case " << runTime.globalPath() << " is locked by "
+                << path << " (" << (lockHost.empty() ? "unreadable" :
+                   "host " + lockHost + ", process " + std::to_string(pid))
+                << "): another " << application << " may be running in it,"
+                << " which cannot be checked from host " << host << ". Remove"
+                << " the lock file if no run is using the case" << nl
+                << exit(FatalError);
+        }
+        if (running(pid, application))
+        {
+            FatalErrorInFunction
+                << "The case " << runTime.globalPath() << " is in use: "
+                << application << " process " << pid << " is running in it"
+                << " (lock file " << path << "). One run per case folder: wait"
+                << " for it to end or stop it; two runs would write the same"
+                << " time directories" << nl << exit(FatalError);
+        }
+        Info<< "Lock file " << path << " of process " << pid << ", which no"
+            << " longer runs (a run killed or crashed): taken over" << nl
+            << endl;
+        ::unlink(path.c_str());
+    }
+    FatalErrorInFunction
+        << "Could not create the lock file " << path << " of the case "
+        << runTime.globalPath() << ": " << std::strerror(errno)
+        << " (is the case folder writable?)" << nl << exit(FatalError);
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,84 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "timeControls.H"
+#include "IFstream.H"
+#include "dictionary.H"
+#include <cmath>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+//- A number entry of controlDict, finite; readEntry reports a missing one
+static scalar finiteEntry(const dictionary& dict, const word& key)
+{
+    const scalar value = dict.get<scalar>(key);
+    if (!std::isfinite(value))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword '" << key << "' in " << dict.name() << " is "
+            << value << "; expected a finite number" << nl
+            << exit(FatalIOError);
+    }
+    return value;
+}
+
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+void Foam::checkTimeControls(const argList& args)
+{
+    const fileName path(args.globalPath()/"system"/"controlDict");
+    IFstream is(path);
+    if (!is.good())
+    {
+        // Time names the missing file itself
+        return;
+    }
+    const dictionary dict(is);
+
+    const scalar deltaT = finiteEntry(dict, "deltaT");
+    if (!(deltaT > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'deltaT' in " << dict.name() << " is " << deltaT
+            << "; expected the time step, > 0 [s]" << nl
+            << exit(FatalIOError);
+    }
+
+    const scalar endTime = finiteEntry(dict, "endTime");
+    if (dict.lookupOrDefault<word>("startFrom", "latestTime") == "startTime")
+    {
+        const scalar startTime = finiteEntry(dict, "startTime");
+        if (endTime < startTime)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword 'endTime' in " << dict.name() << " is "
+                << endTime << ", before 'startTime' " << startTime
+                << "; expected endTime >= startTime" << nl
+                << exit(FatalIOError);
+        }
+    }
+
+    const word control(dict.lookupOrDefault<word>("writeControl", "timeStep"));
+    const scalar interval = finiteEntry(dict, "writeInterval");
+    const bool steps = control == "timeStep";
+    if (steps ? !(interval >= 1) : !(interval > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'writeInterval' in " << dict.name() << " is "
+            << interval << "; expected "
+            << (steps ? "a number of steps >= 1" : "an interval > 0")
+            << " with writeControl " << control << nl
+            << exit(FatalIOError);
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,389 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam, GPL-3.0-or-later.
+\*---------------------------------------------------------------------------*/
+
+#include "timeDirectoryWriter.H"
+#include "OFstream.H"
+#include "OSspecific.H"
+#include "Pstream.H"
+#include <csignal>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <unistd.h>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+//- Print on the master, or on every processor with its number
+static Ostream& report()
+{
+    if (Pstream::parRun())
+    {
+        return Pout;
+    }
+    return Info();
+}
+
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::fileName Foam::timeDirectoryWriter::markerPath
+(
+    const Time& runTime,
+    const word& timeName
+)
+{
+    return runTime.path()/timeName/"uniform"/"solidState";
+}
+
+
+bool Foam::timeDirectoryWriter::complete
+(
+    const Time& runTime,
+    const word& timeName
+)
+{
+    return isFile(markerPath(runTime, timeName), false);
+}
+
+
+bool Foam::timeDirectoryWriter::endsComplete(const fileName& path)
+{
+    if (!isFile(path, false))
+    {
+        return isFile(path + ".gz", false);
+    }
+    std::ifstream is(path.c_str(), std::ios::binary);
+    is.seekg(0, std::ios::end);
+    const std::streamoff size = is.tellg();
+    const std::streamoff n = std::min<std::streamoff>(size, 200);
+    std::string tail(n, ' ');
+    is.seekg(size - n);
+    is.read(&tail[0], n);
+    if (!is)
+    {
+        return false;
+    }
+    const std::string::size_type last = tail.find_last_not_of(" \t\r\n");
+    const std::string divider("* //");
+    return
+        last != std::string::npos
+     && last + 1 >= divider.size()
+     && tail.compare(last + 1 - divider.size(), divider.size(), divider) == 0;
+}
+
+
+void Foam::timeDirectoryWriter::selectStartTime(Time& runTime)
+{
+    // [S19b] the time directories of this processor, constant left out
+    DynamicList<instant> dirs;
+    for (const instant& t : runTime.times())
+    {
+        if (t.name() != runTime.constant())
+        {
+            dirs.append(t);
+        }
+    }
+    const word startFrom
+    (
+        runTime.controlDict().lookupOrDefault<word>("startFrom", "latestTime")
+    );
+    const scalar tol = 1e-12*max(mag(runTime.value()), scalar(1));
+    auto indexOf = [&](const scalar t) -> label
+    {
+        forAll(dirs, i)
+        {
+            if (mag(dirs[i].value() - t) <= tol)
+            {
+                return i;
+            }
+        }
+        return -1;
+    };
+    // the earliest directory holds the initial conditions
+    auto completeAt = [&](const label i)
+    {
+        return i == 0 || complete(runTime, dirs[i].name());
+    };
+
+    const label starti = indexOf(runTime.value());
+    bool present = starti >= 0;
+    reduce(present, andOp<bool>());
+    if (!present)
+    {
+        // Time reports a missing start directory itself
+        return;
+    }
+
+    // the newest complete time up to the start, on every processor
+    label chosen = starti;
+    while (!completeAt(chosen))
+    {
+        --chosen;
+    }
+    scalar t = dirs[chosen].value();
+    reduce(t, minOp<scalar>());
+    chosen = indexOf(t);
+    bool ok = chosen >= 0 && completeAt(chosen);
+    reduce(ok, andOp<bool>());
+    if (!ok)
+    {
+        FatalErrorInFunction
+            << "No time directory up to the start time "
+            << runTime.timeName() << " is complete (written with its "
+            << "uniform/solidState) on every processor of " << runTime.path()
+            << "; the earliest complete time, " << t << ", is missing or"
+            << " incomplete on some processor" << nl << exit(FatalError);
+    }
+
+    if (chosen != starti || !returnReduce(completeAt(starti), andOp<bool>()))
+    {
+        const fileName startDir = runTime.timePath();
+        if (startFrom != "latestTime")
+        {
+            FatalIOErrorInFunction(runTime.controlDict())
+                << "The start time directory " << startDir << " (keywords"
+                << " 'startFrom' " << startFrom << " and 'startTime' of "
+                << runTime.controlDict().name() << ") is incomplete: it has"
+                << " no uniform/solidState, written last when every field"
+                << " is written (a run stopped while writing it). The newest"
+                << " complete time before it is " << dirs[chosen].name()
+                << "; start from it or use startFrom latestTime" << nl
+                << exit(FatalIOError);
+        }
+        Info<< "Time directory " << runTime.timeName() << " is incomplete"
+            << " (no uniform/solidState on "
+            << (Pstream::parRun() ? "some processor" : word("disk"))
+            << ": a run stopped while writing it): starting from the newest"
+            << " complete time, " << dirs[chosen].name() << nl << endl;
+        runTime.setTime(dirs[chosen], 0);
+    }
+
+    // The incomplete directories after the start: kept, moved aside
+    for (label i = chosen + 1; i < dirs.size(); ++i)
+    {
+        if (completeAt(i))
+        {
+            continue;
+        }
+        const fileName dir = runTime.path()/dirs[i].name();
+        fileName aside = dir + ".incomplete";
+        for (label n = 1; exists(aside, false); ++n)
+        {
+            aside = dir + ".incomplete" + Foam::name(n);
+        }
+        if (!mv(dir, aside))
+        {
+            FatalErrorInFunction
+                << "Could not move the incomplete time directory " << dir
+                << " aside to " << aside << nl << exit(FatalError);
+        }
+        report()
+            << "Time directory " << dir << " is incomplete (no"
+            << " uniform/solidState): moved aside to " << aside.name()
+            << endl;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::timeDirectoryWriter::timeDirectoryWriter(const Time& runTime)
+:
+    runTime_(runTime),
+    faultKind_(),
+    faultAfter_(-1),
+    faultDir_(1),
+    nDirs_(0),
+    nWritten_(0),
+    purge_
+    (
+        runTime.controlDict().lookupOrDefault<label>("purgeWrite", 0)
+    ),
+    written_()
+{
+    const std::string hook(getEnv("TRIBOFOAM_WRITE_FAULT"));
+    if (!hook.empty())
+    {
+        std::istringstream is(hook);
+        std::string kind;
+        is >> kind >> faultAfter_;
+        faultKind_ = kind;
+        if (!(is >> faultDir_))
+        {
+            faultDir_ = 1;
+        }
+        if
+        (
+            (faultKind_ != "kill" && faultKind_ != "fail")
+         || faultAfter_ < 0 || faultDir_ < 1
+        )
+        {
+            FatalErrorInFunction
+                << "Environment variable TRIBOFOAM_WRITE_FAULT is '"
+                << hook.c_str() << "'; expected 'kill N M' or 'fail N M'"
+                << " with N >= 0, M >= 1 (a test hook: stop the writer after"
+                << " N files of the M-th time directory written)" << nl
+                << exit(FatalError);
+        }
+        Info<< "Test hook TRIBOFOAM_WRITE_FAULT: " << faultKind_
+            << " after " << faultAfter_ << " files of time directory "
+            << faultDir_ << " written" << endl;
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::timeDirectoryWriter::collect
+(
+    const objectRegistry& db,
+    const regIOobject& marker,
+    DynamicList<const regIOobject*>& objects
+) const
+{
+    for (const word& name : db.sortedToc())
+    {
+        const regIOobject* obj = *db.cfind(name);
+        if (obj == &marker || obj->writeOpt() == IOobject::NO_WRITE)
+        {
+            continue;
+        }
+        if (isA<objectRegistry>(*obj))
+        {
+            collect(dynamic_cast<const objectRegistry&>(*obj), marker, objects);
+        }
+        else
+        {
+            objects.append(obj);
+        }
+    }
+}
+
+
+void Foam::timeDirectoryWriter::fail
+(
+    const fileName& path,
+    const string& why
+) const
+{
+    const fileName dir = runTime_.timePath();
+    rmDir(dir, true);
+    FatalErrorInFunction
+        << "Writing " << path << " failed (" << why.c_str() << "): the disk"
+        << " may be full or the directory not writable. The incomplete time"
+        << " directory " << dir << " has been removed; a restart starts"
+        << " from the last complete time"
+        << nl << exit(FatalError);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::timeDirectoryWriter::write(regIOobject& marker)
+{
+    const fileName dir = runTime_.timePath();
+    const fileName markerFile = markerPath(runTime_, runTime_.timeName());
+    nWritten_ = 0;
+    ++nDirs_;
+    const bool faulty = nDirs_ == faultDir_;
+
+    // [S19b] a directory written again loses its mark first
+    if (isFile(markerFile, false) && !rm(markerFile))
+    {
+        fail(markerFile, "the old mark could not be removed");
+    }
+
+    // One file: the test hook, the write, the file read back to its end
+    auto writeFile = [&](const std::function<bool()>& writer,
+                         const std::function<fileName()>& path)
+    {
+        if (faulty && nWritten_ == faultAfter_ && faultKind_ == "kill")
+        {
+            Info<< "TRIBOFOAM_WRITE_FAULT: killed after " << nWritten_
+                << " files of " << dir << endl;
+            ::kill(::getpid(), SIGKILL);
+        }
+        if (faulty && nWritten_ == faultAfter_ && faultKind_ == "fail")
+        {
+            fail(path(), "TRIBOFOAM_WRITE_FAULT: a simulated failure");
+        }
+        if (!writer())
+        {
+            fail(path(), "the stream reported an error");
+        }
+        if (!endsComplete(path()))
+        {
+            fail(path(), "the file read back is cut short");
+        }
+        ++nWritten_;
+    };
+
+    DynamicList<const regIOobject*> objects;
+    collect(runTime_, marker, objects);
+    for (const regIOobject* obj : objects)
+    {
+        // the path at this time (objectPath() names the last instance
+        // until the object is written)
+        const fileName path
+        (
+            dir/obj->db().dbDir()/obj->local()/obj->name()
+        );
+        writeFile
+        (
+            [&]() { return obj->write(); },
+            [&]() { return path; }
+        );
+    }
+
+    // Time's own dictionary (read by Time before the solver can check the
+    // directory) after the fields: an incomplete directory mostly lacks it
+    writeFile
+    (
+        [&]() { return runTime_.writeTimeDict(); },
+        [&]() { return fileName(dir/"uniform"/"time"); }
+    );
+
+    // The mark last, complete or not at all: written aside, then renamed
+    marker.instance() = runTime_.timeName();
+    const fileName aside = markerFile + ".writing";
+    writeFile
+    (
+        [&]()
+        {
+            mkDir(markerFile.path());
+            OFstream os(aside);
+            bool ok = os.good() && marker.writeHeader(os);
+            ok = ok && marker.writeData(os);
+            IOobject::writeEndDivider(os);
+            os.flush();
+            return ok && os.good();
+        },
+        [&]() { return aside; }
+    );
+    if (!mv(aside, markerFile))
+    {
+        fail(markerFile, "renaming " + aside + " failed");
+    }
+
+    // purgeWrite: the oldest complete directories removed, once the new
+    // one is complete
+    if (written_.empty() || written_.top() != runTime_.timeName())
+    {
+        written_.push(runTime_.timeName());
+    }
+    while (purge_ > 0 && written_.size() > label(purge_))
+    {
+        rmDir(runTime_.path()/written_.pop());
+    }
+}
+
+
+// ************************************************************************* //
