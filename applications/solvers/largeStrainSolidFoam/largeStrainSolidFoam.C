@@ -36,6 +36,7 @@ Description
 #include "clockTime.H"
 #include "writeSchedule.H"
 #include "keepFreedMemory.H"
+#include "strictDictionary.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

@@ -7,6 +7,7 @@ License
 #include "volFields.H"
 #include "IOdictionary.H"
 #include "bodyLaws.H"
+#include "strictDictionary.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -107,6 +108,10 @@ void Foam::contactFaces::readAugmentation(const dictionary& dict)
     const dictionary& a = dict.subDict("augmentedLagrangian");
     augmentTolerance_ = a.get<scalar>("tolerance");
     augmentMaxIterations_ = a.lookupOrDefault<label>("maxIterations", 10);
+    strictDictionary::check
+    (
+        a, {"tolerance", "maxIterations"}, "augmented Lagrangian contact"
+    );
     if (!(augmentTolerance_ > 0) || augmentMaxIterations_ < 1)
     {
         FatalIOErrorInFunction(a)
@@ -139,7 +144,13 @@ void Foam::contactFaces::sampleSensitivity(const frictionResult& res)
 
 void Foam::contactFaces::readContactFaces(const dictionary& dict)
 {
+    // Named after the file its entries came from (an #include'd law
+    // dictionary) for the law's messages
     lawDict_ = dict.subDict("frictionLaw");
+    strictDictionary::nameAfterSource
+    (
+        lawDict_, strictDictionary::sourceFile(dict)
+    );
     readAugmentation(dict);
     penaltyScale_ = dict.lookupOrDefault<scalar>("penaltyScale", 100);
     tangentialPenaltyScale_ =
@@ -186,6 +197,19 @@ void Foam::contactFaces::readContactFaces(const dictionary& dict)
         layout_ = layoutLaw->stateLayout();
         readState(dict, layoutLaw());
     }
+}
+
+
+Foam::wordList Foam::contactFaces::contactFacesKeywords() const
+{
+    wordList w
+    ({
+        "frictionLaw", "penaltyScale", "tangentialPenaltyScale",
+        "contactSmoothing", "augmentedLagrangian", "dissipatedEnergy",
+        "normalMultiplier"
+    });
+    w.append(layout_.keywords());
+    return w;
 }
 
 

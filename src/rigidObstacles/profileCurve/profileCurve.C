@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "profileCurve.H"
+#include "strictDictionary.H"
 #include "mathematicalConstants.H"
 #include "error.H"
 
@@ -96,6 +97,15 @@ void Foam::profileCurve::read(const dictionary& dict)
         {
             s.start = segs.last().end;
         }
+
+        strictDictionary::check
+        (
+            sd,
+            e.keyword() == "arc"
+          ? wordList({"start", "mid", "end", "nSegments"})
+          : wordList({"start", "end"}),
+            "profile segment " + e.keyword()
+        );
 
         if (e.keyword() == "line")
         {

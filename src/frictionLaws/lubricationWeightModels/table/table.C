@@ -12,6 +12,7 @@ License
 
 #include "table.H"
 #include "addToRunTimeSelectionTable.H"
+#include "strictDictionary.H"
 
 namespace Foam
 {
@@ -39,6 +40,10 @@ Foam::lubricationWeightModels::table::table(const dictionary& dict)
                 << dict.name() << ")" << exit(FatalIOError);
         }
     }
+    strictDictionary::check
+    (
+        dict, {"type", "alpha", "alphaCoeffs"}, "lubrication weight table"
+    );
 }
 
 

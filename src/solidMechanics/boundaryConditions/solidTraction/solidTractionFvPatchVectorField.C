@@ -5,6 +5,7 @@ License
 
 #include "solidTractionFvPatchVectorField.H"
 #include "addToRunTimeSelectionTable.H"
+#include "strictDictionary.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -85,6 +86,17 @@ Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
     {
         fvPatchVectorField::operator=(patchInternalField());
     }
+
+    strictDictionary::check
+    (
+        dict,
+        {
+            "type", "value", "patchType", "traction", "tractionCoeffs",
+            "pressure", "pressureCoeffs", "followerPressure",
+            "foundationStiffness", "foundationDirection"
+        },
+        "solidTraction patch " + p.name()
+    );
 }
 
 

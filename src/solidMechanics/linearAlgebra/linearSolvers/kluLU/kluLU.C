@@ -5,6 +5,7 @@ License
 
 #include "kluLU.H"
 #include "addToRunTimeSelectionTable.H"
+#include "strictDictionary.H"
 #include "eigenVector.H"
 
 namespace Foam
@@ -104,6 +105,11 @@ Foam::linearSolvers::kluLU::kluLU
             << " must be in (0, 1), got " << refactorTolerance_ << nl
             << exit(FatalIOError);
     }
+    strictDictionary::check
+    (
+        dict, {"type", "directCellLimit", "refactorTolerance"},
+        "linear solver klu"
+    );
 
     // The compressed columns of the pattern and where each block entry
     // goes: entries counted per column, then placed row by row (so each
