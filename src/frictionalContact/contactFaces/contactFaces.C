@@ -147,10 +147,7 @@ void Foam::contactFaces::readContactFaces(const dictionary& dict)
     // Named after the file its entries came from (an #include'd law
     // dictionary) for the law's messages
     lawDict_ = dict.subDict("frictionLaw");
-    strictDictionary::nameAfterSource
-    (
-        lawDict_, strictDictionary::sourceFile(dict)
-    );
+    strictDictionary::nameAfterSource(lawDict_);
     readAugmentation(dict);
     penaltyScale_ = dict.lookupOrDefault<scalar>("penaltyScale", 100);
     tangentialPenaltyScale_ =

@@ -81,7 +81,9 @@ void Foam::profileCurve::read(const dictionary& dict)
                 << " 'arc { .. }', got " << e.keyword()
                 << " in dictionary " << dict.name() << exit(FatalIOError);
         }
-        const dictionary& sd = e.dict();
+        // named after the profile's dictionary (messages name its file)
+        dictionary sd(e.dict());
+        sd.name() = dict.name() + ".segments." + e.keyword();
         segment s;
         s.start = scale*sd.get<vector2D>("start");
         s.end = scale*sd.get<vector2D>("end");

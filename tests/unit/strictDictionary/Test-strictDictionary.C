@@ -117,6 +117,22 @@ int main()
         "origin -> no suggestion",
         strictDictionary::nearest("origin", known).empty()
     );
+    {
+        const wordList k({"predictor", "predictorContact", "checkJacobian",
+                          "checkJacobianStep"});
+        unitTest::checkTrue
+        (
+            "predictorContacts -> predictorContact, not the prefix predictor",
+            strictDictionary::nearest("predictorContacts", k)
+         == "predictorContact"
+        );
+        unitTest::checkTrue
+        (
+            "checkJacobianSteps -> checkJacobianStep",
+            strictDictionary::nearest("checkJacobianSteps", k)
+         == "checkJacobianStep"
+        );
+    }
     unitTest::checkTrue
     (
         "sub -> no suggestion (two edits are too many for three letters)",
@@ -174,10 +190,7 @@ int main()
             "sourceFile of the law's entries is lawDict (" + src + ")",
             src.name() == "lawDict"
         );
-        strictDictionary::nameAfterSource
-        (
-            law, strictDictionary::sourceFile(top.subDict("bottom"))
-        );
+        strictDictionary::nameAfterSource(law);
         unitTest::checkTrue
         (
             "nameAfterSource names the #include'd file (" + law.name() + ")",
