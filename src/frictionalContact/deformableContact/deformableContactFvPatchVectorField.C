@@ -440,7 +440,12 @@ Foam::deformableContactFvPatchVectorField::deformableContactFvPatchVectorField
     (
         dict, known,
         "deformableContact patch " + p.name()
-      + (slave_ ? " (with the friction law)" : " (without a friction law)")
+      + (
+            slave_
+          ? " (with the friction law)"
+          : " (without 'frictionLaw': the law, penalties and smoothing go"
+            " with 'frictionLaw' on one side of the pair)"
+        )
     );
 }
 
