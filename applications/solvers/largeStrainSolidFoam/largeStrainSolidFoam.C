@@ -43,6 +43,7 @@ Description
 #include "timeControls.H"
 #include "caseLock.H"
 #include "timeDirectoryWriter.H"
+#include "strictDictionary.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

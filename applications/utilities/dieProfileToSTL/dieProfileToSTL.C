@@ -60,6 +60,7 @@ Description
 
 #include "argList.H"
 #include "IFstream.H"
+#include "strictDictionary.H"
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "dictionary.H"
@@ -129,6 +130,11 @@ int main(int argc, char* argv[])
     const scalar zMin(dict.get<scalar>("zMin"));
     const scalar zMax(dict.get<scalar>("zMax"));
     const scalar resolution(degToRad(dict.get<scalar>("arcResolution")));
+    {
+        wordList known({"FoamFile", "name", "zMin", "zMax", "arcResolution"});
+        known.append(profileCurve::keywords());
+        strictDictionary::check(dict, known, "dieProfileToSTL");
+    }
 
     if (!(zMax > zMin))
     {

@@ -46,6 +46,8 @@ Usage
 #include "argList.H"
 #include "IFstream.H"
 #include "driverModes.H"
+#include "strictDictionary.H"
+#include "HashTable.H"
 
 using namespace Foam;
 
@@ -88,6 +90,63 @@ int main(int argc, char *argv[])
         dict.getOrDefault<fileName>("output", "frictionLawDriver.dat")
     );
     driverModes::checkWritable(dict, "output", output);
+
+    // Strict keywords (strictDictionary.H): the driver's own, and those of
+    // the sub-dictionary of each mode (the law checks its own)
+    const HashTable<wordList> modeKeywords
+    ({
+        {"prescribed", {"slipRate", "slipRateCoeffs", "runInTime"}},
+        {
+            "springSlider",
+            {
+                "mass", "stiffness", "loadPointVelocity",
+                "loadPointVelocityCoeffs", "statePerturbation", "runInTime"
+            }
+        },
+        {"stability", {"loadPointVelocities", "nVelocities", "masses"}},
+        {
+            "identification",
+            {
+                "table", "columns", "normalStress", "mass", "VStar",
+                "confidenceLevel", "friction", "frictionSlope",
+                "lawDictionary"
+            }
+        },
+        {
+            "frictionMap",
+            {
+                "slipRates", "nSlipRates", "filmThicknesses",
+                "contactPressures", "filmThicknessParameter",
+                "filmMemoryDistance"
+            }
+        },
+        {
+            "fit",
+            {
+                "record", "columns", "drive", "stiffness", "mass",
+                "runInTime", "subSteps", "runInSteps", "confidenceLevel",
+                "parameters", "lawDictionary"
+            }
+        }
+    });
+    wordList known
+    ({
+        "FoamFile", "mode", "output", "law", "contactPressure", "deltaT",
+        "endTime", "writeInterval", "plot", "shearYield"
+    });
+    known.append(modeKeywords.sortedToc());
+    strictDictionary::check(dict, known, "frictionLawDriver");
+    forAllConstIters(modeKeywords, iter)
+    {
+        if (dict.isDict(iter.key()))
+        {
+            strictDictionary::check
+            (
+                dict.subDict(iter.key()), iter.val(),
+                "frictionLawDriver mode " + iter.key()
+            );
+        }
+    }
 
     // Modes that build their laws themselves (or need none)
     if (mode == "identification")

@@ -13,6 +13,7 @@ License
 #include "frictionLaw.H"
 #include "frictionParameters.H"
 #include "error.H"
+#include "strictDictionary.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -87,6 +88,21 @@ void Foam::frictionLaw::setFromReturn
     out.state.plasticSlip = old.plasticSlip + rr.dg*rr.m;
     out.state.cumulatedSlip = old.cumulatedSlip + rr.dg;
     out.state.status = rr.slip ? frictionState::SLIP : frictionState::STICK;
+}
+
+
+void Foam::frictionLaw::checkKeywords
+(
+    const dictionary& dict,
+    const wordList& own
+)
+{
+    wordList known({"type", "KN", "KT"});
+    known.append(own);
+    strictDictionary::check
+    (
+        dict, known, "friction law " + dict.getOrDefault<word>("type", "")
+    );
 }
 
 

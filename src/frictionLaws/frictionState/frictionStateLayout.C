@@ -257,6 +257,24 @@ void Foam::frictionStateLayout::write
 }
 
 
+Foam::wordList Foam::frictionStateLayout::keywords() const
+{
+    DynamicList<word> w;
+    for (const frictionStateEntry& e : entries_)
+    {
+        if (e.write)
+        {
+            w.append(e.name);
+            if (!e.oldName.empty())
+            {
+                w.append(e.oldName);
+            }
+        }
+    }
+    return std::move(w);
+}
+
+
 bool Foam::frictionStateLayout::foundIn(const dictionary& dict) const
 {
     for (const frictionStateEntry& e : entries_)

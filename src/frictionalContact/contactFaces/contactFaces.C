@@ -11,6 +11,7 @@ License
 #include "vonMisesPlastic.H"
 #include "surfaceFields.H"
 #include "emptyFvPatch.H"
+#include "strictDictionary.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -298,6 +299,10 @@ void Foam::contactFaces::readAugmentation(const dictionary& dict)
       ? a.get<scalar>("tolerance")
       : 1e-4*contactSurface::maxCellDepth(contactPatch());
     augmentMaxIterations_ = a.lookupOrDefault<label>("maxIterations", 10);
+    strictDictionary::check
+    (
+        a, {"tolerance", "maxIterations"}, "augmented Lagrangian contact"
+    );
     if (!(augmentTolerance_ > 0) || augmentMaxIterations_ < 1)
     {
         FatalIOErrorInFunction(a)
@@ -330,7 +335,10 @@ void Foam::contactFaces::sampleSensitivity(const frictionResult& res)
 
 void Foam::contactFaces::readContactFaces(const dictionary& dict)
 {
+    // Named after the file its entries came from (an #include'd law
+    // dictionary) for the law's messages
     lawDict_ = dict.subDict("frictionLaw");
+    strictDictionary::nameAfterSource(lawDict_);
     readAugmentation(dict);
     // [C5], [C5c] stiff for the plain penalty and a given augmentation
     // (its tolerance chosen for it), soft for the default augmentation
@@ -389,6 +397,19 @@ void Foam::contactFaces::readContactFaces(const dictionary& dict)
         layout_ = layoutLaw->stateLayout();
         readState(dict, layoutLaw());
     }
+}
+
+
+Foam::wordList Foam::contactFaces::contactFacesKeywords() const
+{
+    wordList w
+    ({
+        "frictionLaw", "penaltyScale", "tangentialPenaltyScale",
+        "contactSmoothing", "augmentedLagrangian", "dissipatedEnergy",
+        "normalMultiplier"
+    });
+    w.append(layout_.keywords());
+    return w;
 }
 
 

@@ -135,6 +135,106 @@ Foam::rigidContactSurface::rigidContactSurface
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::rigidContactSurface::checkInitialGap
+(
+    const vectorField& D,
+    const scalar t,
+    const dictionary& dict
+) const
+{
+    // [C2d] a face that starts deep inside the obstacle is out of its
+    // search reach and would never come into contact; an obstacle whose
+    // normals point into the body sees the body on its far side
+    const bool allow =
+        dict.getOrDefault<bool>("allowInitialPenetration", false);
+    const scalar fraction = 0.25;
+    const vectorField& Cf = patch_.Cf();
+    const vectorField& Sf = patch_.Sf();
+
+    label nDeep = 0, nNear = 0, nAway = 0;
+    scalar ratio = -1, deepest = 0, deepestCellDepth = 0;
+    point deepestAt(Zero);
+    forAll(Cf, i)
+    {
+        const point x(Cf[i] + D[i]);
+        obstaclePoint cp;
+        if (!obstacle_->nearest(x, t, GREAT, cp))
+        {
+            continue;
+        }
+        const scalar h = cellDepth(i, Sf[i]);
+        if (mag(cp.gap) <= searchDistance_)
+        {
+            ++nNear;
+            // the body's outward normal and the obstacle's on one side
+            if ((Sf[i] & cp.n) > 0)
+            {
+                ++nAway;
+            }
+        }
+        if (-cp.gap > fraction*h)
+        {
+            ++nDeep;
+            if (-cp.gap/h > ratio)
+            {
+                ratio = -cp.gap/h;
+                deepest = -cp.gap;
+                deepestCellDepth = h;
+                deepestAt = x;
+            }
+        }
+    }
+
+    reduce(nNear, sumOp<label>());
+    reduce(nAway, sumOp<label>());
+    reduce(nDeep, sumOp<label>());
+    const word type(obstacleDict_.getOrDefault<word>("type", "?"));
+
+    if (nNear > 0 && nAway > 0.9*nNear)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Patch " << patch_.name() << " (dictionary " << dict.name()
+            << "): the normals of the obstacle (type " << type << ") point"
+            << " away from the body: " << nAway << " of the " << nNear
+            << " faces within searchDistance " << searchDistance_ << " m"
+            << " see the obstacle's normal on their own side (the body"
+            << " behind the surface). The obstacle's normals must point"
+            << " towards the body: reverse the surface's triangles, set"
+            << " 'flipNormals yes;' (triSurface) or reverse 'normal'"
+            << " (plane) in dictionary obstacle" << nl << exit(FatalIOError);
+    }
+
+    // The deepest face over the processors
+    const scalar maxRatio = returnReduce(ratio, maxOp<scalar>());
+    if (ratio != maxRatio)
+    {
+        deepest = 0;
+        deepestCellDepth = 0;
+        deepestAt = Zero;
+    }
+    reduce(deepest, maxOp<scalar>());
+    reduce(deepestCellDepth, maxOp<scalar>());
+    reduce(deepestAt, maxMagSqrOp<vector>());
+    const label nFaces = returnReduce(Cf.size(), sumOp<label>());
+
+    if (nDeep && !allow)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Patch " << patch_.name() << " (dictionary " << dict.name()
+            << "): " << nDeep << " of " << nFaces << " faces start inside"
+            << " the obstacle (type " << type << ") deeper than "
+            << fraction << " of their cell's depth at time " << t
+            << ": the deepest by " << deepest << " m (" << maxRatio
+            << " times its cell's depth " << deepestCellDepth << " m) at "
+            << deepestAt << nl
+            << "Move the obstacle (or the body) so that the bodies start"
+            << " apart or touching, or set 'allowInitialPenetration yes;'"
+            << " in the patch dictionary to start from this overlap"
+            << exit(FatalIOError);
+    }
+}
+
+
 bool Foam::rigidContactSurface::masterPointOf
 (
     const label i,

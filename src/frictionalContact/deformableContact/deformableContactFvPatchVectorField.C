@@ -5,6 +5,7 @@ License
 
 #include "deformableContactFvPatchVectorField.H"
 #include "addToRunTimeSelectionTable.H"
+#include "strictDictionary.H"
 #include "wallFvPatch.H"
 #include "wedgePolyPatch.H"
 #include "volFields.H"
@@ -427,6 +428,25 @@ Foam::deformableContactFvPatchVectorField::deformableContactFvPatchVectorField
     {
         fvPatchVectorField::operator=(patchInternalField());
     }
+
+    // The law, penalties and face state only on the side with a law
+    wordList known({"type", "value", "patchType", "partnerPatch"});
+    known.append("searchDistance");
+    if (slave_)
+    {
+        known.append(contactFacesKeywords());
+    }
+    strictDictionary::check
+    (
+        dict, known,
+        "deformableContact patch " + p.name()
+      + (
+            slave_
+          ? " (with the friction law)"
+          : " (without 'frictionLaw': the law, penalties and smoothing go"
+            " with 'frictionLaw' on one side of the pair)"
+        )
+    );
 }
 
 

@@ -7,6 +7,7 @@ License
 #include "addToRunTimeSelectionTable.H"
 #include "wallFvPatch.H"
 #include "volFields.H"
+#include "strictDictionary.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -95,6 +96,16 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
     {
         fvPatchVectorField::operator=(patchInternalField());
     }
+
+    surface_->checkInitialGap(*this, iF.time().value(), dict);
+
+    wordList known({"type", "value", "patchType"});
+    known.append(rigidContactSurface::keywords());
+    known.append(contactFacesKeywords());
+    strictDictionary::check
+    (
+        dict, known, "frictionalContact patch " + p.name()
+    );
 }
 
 

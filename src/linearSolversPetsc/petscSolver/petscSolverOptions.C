@@ -8,6 +8,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "petscSolver.H"
+#include "strictDictionary.H"
 #include "HashSet.H"
 #include <cctype>
 
@@ -38,7 +39,8 @@ void Foam::linearSolvers::petscSolver::readKeywords()
     static const wordHashSet keywords
     {
         "type", "ksp", "preconditioner", "maxIterations", "view", "prefix",
-        "options", "directCellLimit", "nearNullSpace", "shiftZeroPivots",
+        "options", "directCellLimit", "nestedDissectionCells", "nearNullSpace",
+        "shiftZeroPivots",
         "reusePreconditioner", "refreshIterations"
     };
     static const wordList ksps{"gmres", "fgmres", "cg", "bcgs", "preonly"};
@@ -48,18 +50,13 @@ void Foam::linearSolvers::petscSolver::readKeywords()
         "none"
     };
 
-    for (const entry& e : dict_)
-    {
-        if (!keywords.found(e.keyword()))
-        {
-            FatalIOErrorInFunction(dict_)
-                << "Unknown keyword '" << e.keyword() << "' in dictionary "
-                << dict_.name() << " (linear solver petsc)" << nl
-                << "Valid keywords: " << keywords.sortedToc() << nl
-                << "Raw PETSc options go into the sub-dictionary 'options'"
-                << exit(FatalIOError);
-        }
-    }
+    // The entries of 'options' are PETSc's (checked by PETSc itself)
+    strictDictionary::check
+    (
+        dict_, keywords.sortedToc(),
+        "linear solver petsc; raw PETSc options go into the sub-dictionary"
+        " 'options'"
+    );
 
     kspName_ = dict_.lookupOrDefault<word>("ksp", "gmres");
     if (!ksps.found(kspName_))

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "profileCurve.H"
+#include "strictDictionary.H"
 #include "mathematicalConstants.H"
 #include "error.H"
 
@@ -80,7 +81,9 @@ void Foam::profileCurve::read(const dictionary& dict)
                 << " 'arc { .. }', got " << e.keyword()
                 << " in dictionary " << dict.name() << exit(FatalIOError);
         }
-        const dictionary& sd = e.dict();
+        // named after the profile's dictionary (messages name its file)
+        dictionary sd(e.dict());
+        sd.name() = dict.name() + ".segments." + e.keyword();
         segment s;
         s.start = scale*sd.get<vector2D>("start");
         s.end = scale*sd.get<vector2D>("end");
@@ -96,6 +99,15 @@ void Foam::profileCurve::read(const dictionary& dict)
         {
             s.start = segs.last().end;
         }
+
+        strictDictionary::check
+        (
+            sd,
+            e.keyword() == "arc"
+          ? wordList({"start", "mid", "end", "nSegments"})
+          : wordList({"start", "end"}),
+            "profile segment " + e.keyword()
+        );
 
         if (e.keyword() == "line")
         {

@@ -12,6 +12,7 @@ License
 
 #include "rigidObstacle.H"
 #include "checkedFunction1.H"
+#include "strictDictionary.H"
 #include "error.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -64,6 +65,25 @@ Foam::scalar Foam::rigidObstacle::readPositive
     }
 
     return s;
+}
+
+
+void Foam::rigidObstacle::checkKeywords
+(
+    const dictionary& dict,
+    const wordList& own
+)
+{
+    wordList known
+    ({
+        "type", "translation", "translationCoeffs", "rotationAxis",
+        "rotationOrigin", "rotationAngle", "rotationAngleCoeffs"
+    });
+    known.append(own);
+    strictDictionary::check
+    (
+        dict, known, "obstacle " + dict.getOrDefault<word>("type", "")
+    );
 }
 
 

@@ -29,6 +29,8 @@ Foam::frictionLaws::cappedCoulomb::cappedCoulomb(const dictionary& dict)
     flowStressFriction(dict),
     mu_(frictionParameters::nonNegative(dict, "mu")),
     m_(frictionParameters::unitInterval(dict, "m"))
-{}
+{
+    checkKeywords(dict, {"mu", "m"});
+}
 
 // ************************************************************************* //

@@ -34,6 +34,7 @@ Foam::frictionLaws::coulomb::coulomb(const dictionary& dict)
     (
         dict, "muStatic", muStatic_, mu_, frictionParameters::closed
     );
+    checkKeywords(dict, {"mu", "muStatic"});
 }
 
 

@@ -90,6 +90,14 @@ Foam::frictionLaws::curnier::curnier(const dictionary& dict)
             << "' (valid: coulomb anisotropicCoulomb paraboloid power)"
             << " in dictionary " << dict.name() << exit(FatalIOError);
     }
+    checkKeywords
+    (
+        dict,
+        {
+            "criterion", "f", "a", "b", "n", "direction1", "C", "QT", "Q",
+            "referencePressure"
+        }
+    );
 }
 
 

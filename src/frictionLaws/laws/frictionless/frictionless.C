@@ -37,7 +37,9 @@ static Foam::dictionary withDefaultKT(const Foam::dictionary& dict)
 Foam::frictionLaws::frictionless::frictionless(const dictionary& dict)
 :
     frictionLaw(withDefaultKT(dict))
-{}
+{
+    checkKeywords(dict, wordList());
+}
 
 
 void Foam::frictionLaws::frictionless::update

@@ -49,6 +49,7 @@ Foam::frictionLaws::generalFriction::generalFriction(const dictionary& dict)
         dict, "transitionRealArea", alphaT_,
         0, frictionParameters::open, 1, frictionParameters::open
     );
+    checkKeywords(dict, {"f", "transitionRealArea"});
 }
 
 

@@ -87,6 +87,16 @@ Foam::frictionLaws::lubricatedRateState::lubricatedRateState
     const Pair<scalar> p =
         frictionParameters::range(dict, "contactPressureRange", {1e6, 1e9});
     checkWellPosedness(v.first(), v.second(), p.first(), p.second());
+    checkKeywords
+    (
+        dict,
+        {
+            "M", "D0", "creepVelocity", "muStatic", "muDynamic",
+            "criticalVelocity", "mu0", "mu0Coeffs", "filmViscosity",
+            "filmMemoryDistance", "lubrication", "freshContactAge",
+            "slipRateRange", "contactPressureRange"
+        }
+    );
 }
 
 

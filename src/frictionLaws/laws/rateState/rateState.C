@@ -59,6 +59,13 @@ Foam::frictionLaws::rateState::rateState(const dictionary& dict)
         stateLaw_->stateName(), frictionStateEntry::SCALAR, phiSlot,
         stateLaw_->stateDimensions(), true, true, stateLaw_->oldStateName()
     );
+    wordList own
+    ({
+        "a", "b", "muStar", "VStar", "creepVelocity", "form",
+        "initialSlipRate"
+    });
+    own.append(stateLaw_->keywords());
+    checkKeywords(dict, own);
 }
 
 

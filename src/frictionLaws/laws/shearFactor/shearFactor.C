@@ -28,6 +28,8 @@ Foam::frictionLaws::shearFactor::shearFactor(const dictionary& dict)
 :
     flowStressFriction(dict),
     m_(frictionParameters::unitInterval(dict, "m"))
-{}
+{
+    checkKeywords(dict, {"m"});
+}
 
 // ************************************************************************* //

@@ -283,6 +283,14 @@ Foam::frictionLaws::tabulated::tabulated(const dictionary& dict)
     }
 
     readTables(dict);
+    checkKeywords
+    (
+        dict,
+        {
+            "quantity", "table", "file", "temperatures", "tables", "files",
+            "temperature"
+        }
+    );
 
     for (const table& t : tables_)
     {

@@ -13,6 +13,7 @@ License
 #include "constant.H"
 #include "frictionParameters.H"
 #include "addToRunTimeSelectionTable.H"
+#include "strictDictionary.H"
 
 namespace Foam
 {
@@ -27,7 +28,12 @@ namespace lubricationWeightModels
 Foam::lubricationWeightModels::constant::constant(const dictionary& dict)
 :
     alpha_(frictionParameters::unitInterval(dict, "alpha"))
-{}
+{
+    strictDictionary::check
+    (
+        dict, {"type", "alpha"}, "lubrication weight constant"
+    );
+}
 
 
 void Foam::lubricationWeightModels::constant::alpha

@@ -13,6 +13,7 @@ License
 #include "stribeck.H"
 #include "frictionParameters.H"
 #include "addToRunTimeSelectionTable.H"
+#include "strictDictionary.H"
 
 namespace Foam
 {
@@ -30,7 +31,17 @@ Foam::lubricationWeightModels::stribeck::stribeck(const dictionary& dict)
     Db_(frictionParameters::positive(dict, "referenceFilmThickness")),
     vb_(frictionParameters::positive(dict, "referenceVelocity")),
     n_(frictionParameters::positive(dict, "n", 1))
-{}
+{
+    strictDictionary::check
+    (
+        dict,
+        {
+            "type", "filmThickness", "referenceFilmThickness",
+            "referenceVelocity", "n"
+        },
+        "lubrication weight stribeck"
+    );
+}
 
 
 void Foam::lubricationWeightModels::stribeck::alpha

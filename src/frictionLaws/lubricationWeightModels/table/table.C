@@ -13,6 +13,7 @@ License
 #include "table.H"
 #include "checkedFunction1.H"
 #include "addToRunTimeSelectionTable.H"
+#include "strictDictionary.H"
 
 namespace Foam
 {
@@ -40,6 +41,10 @@ Foam::lubricationWeightModels::table::table(const dictionary& dict)
                 << dict.name() << ")" << exit(FatalIOError);
         }
     }
+    strictDictionary::check
+    (
+        dict, {"type", "alpha", "alphaCoeffs"}, "lubrication weight table"
+    );
 }
 
 

@@ -52,6 +52,7 @@ Foam::rigidObstacles::cylinderObstacle::cylinderObstacle
             << "' in dictionary " << dict.name()
             << exit(FatalIOError);
     }
+    checkKeywords(dict, wordList({"axisPoint", "axis", "radius", "side"}));
 }
 
 

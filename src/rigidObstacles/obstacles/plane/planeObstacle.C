@@ -32,7 +32,9 @@ Foam::rigidObstacles::planeObstacle::planeObstacle
     rigidObstacle(dict),
     origin_(dict.get<point>("point")),
     normal_(readDirection(dict, "normal"))
-{}
+{
+    checkKeywords(dict, wordList({"point", "normal"}));
+}
 
 
 bool Foam::rigidObstacles::planeObstacle::nearestInitial

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "profileObstacle.H"
+#include "strictDictionary.H"
 #include "addToRunTimeSelectionTable.H"
 #include "IFstream.H"
 
@@ -49,7 +50,12 @@ Foam::dictionary Foam::rigidObstacles::profileObstacle::profileDict
             << "keyword 'file': cannot open the profile dictionary " << file
             << " named in dictionary " << dict.name() << exit(FatalIOError);
     }
-    return dictionary(is);
+    // The file may be the dictionary of dieProfileToSTL as well
+    const dictionary profile(is);
+    wordList known({"FoamFile", "name", "zMin", "zMax", "arcResolution"});
+    known.append(profileCurve::keywords());
+    strictDictionary::check(profile, known, "profile of the obstacle");
+    return profile;
 }
 
 
@@ -63,7 +69,15 @@ Foam::rigidObstacles::profileObstacle::profileObstacle
 :
     rigidObstacle(dict),
     curve_(profileDict(dict, caseDir))
-{}
+{
+    // The profile's entries here or in the file named by 'file'
+    wordList own({"file"});
+    if (!dict.found("file"))
+    {
+        own.append(profileCurve::keywords());
+    }
+    checkKeywords(dict, own);
+}
 
 
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //

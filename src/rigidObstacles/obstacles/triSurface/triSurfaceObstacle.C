@@ -85,6 +85,7 @@ Foam::triSurface Foam::rigidObstacles::triSurfaceObstacle::readSurface
             << exit(FatalIOError);
     }
 
+    checkSTLFile(dict, file);
     triSurface surf(file, scale);
 
     if (surf.empty())
@@ -96,6 +97,7 @@ Foam::triSurface Foam::rigidObstacles::triSurfaceObstacle::readSurface
             << exit(FatalIOError);
     }
 
+    checkSurface(dict, file, surf);
     return surf;
 }
 
@@ -380,6 +382,16 @@ Foam::rigidObstacles::triSurfaceObstacle::triSurfaceObstacle
     surface_.pointFaces();
     surface_.faceEdges();
     surface_.edgeFaces();
+
+    checkKeywords
+    (
+        dict,
+        wordList
+        ({
+            "file", "scale", "normal", "featureAngle", "flipNormals",
+            "closed"
+        })
+    );
 }
 
 

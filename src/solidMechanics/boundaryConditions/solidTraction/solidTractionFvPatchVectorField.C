@@ -6,6 +6,7 @@ License
 #include "solidTractionFvPatchVectorField.H"
 #include "checkedFunction1.H"
 #include "addToRunTimeSelectionTable.H"
+#include "strictDictionary.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -86,6 +87,17 @@ Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
     {
         fvPatchVectorField::operator=(patchInternalField());
     }
+
+    strictDictionary::check
+    (
+        dict,
+        {
+            "type", "value", "patchType", "traction", "tractionCoeffs",
+            "pressure", "pressureCoeffs", "followerPressure",
+            "foundationStiffness", "foundationDirection"
+        },
+        "solidTraction patch " + p.name()
+    );
 }
 
 

@@ -5,6 +5,7 @@ License
 
 #include "bodyLaws.H"
 #include "polyMesh.H"
+#include "strictDictionary.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -19,6 +20,15 @@ Foam::bodyLaws::bodyLaws
     cellBody_(mesh.nCells(), -1)
 {
     const dictionary& mp = mechanicalProperties;
+    strictDictionary::check
+    (
+        mp,
+        {
+            "mechanicalLaw", "bodies", "massScaling", "volumetricAveraging",
+            "volumetricAveragingWeight"
+        },
+        "mechanical properties"
+    );
     if (!mp.found("bodies"))
     {
         laws_.setSize(1);
@@ -59,6 +69,10 @@ Foam::bodyLaws::bodyLaws
                 << " is not a dictionary; expected " << zoneName
                 << " { mechanicalLaw { ... } }" << nl << exit(FatalIOError);
         }
+        strictDictionary::check
+        (
+            bodies.subDict(zoneName), {"mechanicalLaw"}, "body " + zoneName
+        );
         const label zonei = zones.findZoneID(zoneName);
         if (zonei < 0)
         {

@@ -19,7 +19,9 @@ namespace mechanicalLaws
 Foam::mechanicalLaws::linearElastic::linearElastic(const dictionary& dict)
 :
     mechanicalLaw(dict)
-{}
+{
+    checkKeywords(dict, wordList());
+}
 
 
 Foam::tensor Foam::mechanicalLaws::linearElastic::stress

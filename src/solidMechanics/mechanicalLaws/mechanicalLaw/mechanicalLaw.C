@@ -4,6 +4,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mechanicalLaw.H"
+#include "strictDictionary.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -43,6 +44,21 @@ Foam::scalar Foam::mechanicalLaw::readBounded
     }
 
     return value;
+}
+
+
+void Foam::mechanicalLaw::checkKeywords
+(
+    const dictionary& dict,
+    const wordList& own
+)
+{
+    wordList known({"type", "rho", "E", "nu"});
+    known.append(own);
+    strictDictionary::check
+    (
+        dict, known, "mechanical law " + dict.getOrDefault<word>("type", "")
+    );
 }
 
 

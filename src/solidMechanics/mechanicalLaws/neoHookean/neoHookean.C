@@ -19,7 +19,9 @@ namespace mechanicalLaws
 Foam::mechanicalLaws::neoHookean::neoHookean(const dictionary& dict)
 :
     mechanicalLaw(dict)
-{}
+{
+    checkKeywords(dict, wordList());
+}
 
 
 Foam::tensor Foam::mechanicalLaws::neoHookean::stress

@@ -238,6 +238,7 @@ Foam::mechanicalLaws::vonMisesPlastic::vonMisesPlastic(const dictionary& dict)
     initialYield_(yieldStress_.value(0))
 {
     checkHardening(dict);
+    checkKeywords(dict, wordList({"yieldStress", "yieldStressCoeffs"}));
 }
 
 

@@ -5,6 +5,7 @@ License
 
 #include "eigenLU.H"
 #include "addToRunTimeSelectionTable.H"
+#include "strictDictionary.H"
 #include "eigenVector.H"
 
 namespace Foam
@@ -61,6 +62,15 @@ Foam::linearSolvers::eigenLU::eigenLU
             << " must be >= 1, got " << maxReuseIterations_ << nl
             << exit(FatalIOError);
     }
+    strictDictionary::check
+    (
+        dict,
+        {
+            "type", "directCellLimit", "nestedDissectionCells", "reuse",
+            "maxReuseIterations"
+        },
+        "linear solver " + dict.getOrDefault<word>("type", "eigenLU")
+    );
     gmres_.preconditioner().set(lu_);
     gmres_.setMaxIterations(maxReuseIterations_);
     gmres_.set_restart(maxReuseIterations_ + 1);

@@ -5,6 +5,7 @@ License
 
 #include "kluLU.H"
 #include "addToRunTimeSelectionTable.H"
+#include "strictDictionary.H"
 #include "eigenVector.H"
 
 namespace Foam
@@ -95,6 +96,15 @@ Foam::linearSolvers::kluLU::kluLU
             << " must be in (0, 1), got " << refactorTolerance_ << nl
             << exit(FatalIOError);
     }
+    strictDictionary::check
+    (
+        dict,
+        {
+            "type", "directCellLimit", "nestedDissectionCells",
+            "refactorTolerance"
+        },
+        "linear solver klu"
+    );
 
     klu_defaults(&common_);
     symbolic_ = klu_analyze

@@ -6,6 +6,7 @@ License
 #include "umfpackLU.H"
 #include "addToRunTimeSelectionTable.H"
 #include "eigenVector.H"
+#include "strictDictionary.H"
 
 namespace Foam
 {
@@ -179,6 +180,15 @@ Foam::linearSolvers::umfpackLU::umfpackLU
         readChoice(dict, "strategy", strategyNames, "symmetric");
     control_[UMFPACK_ORDERING] =
         readChoice(dict, "ordering", orderingNames, "metis");
+    strictDictionary::check
+    (
+        dict,
+        {
+            "type", "directCellLimit", "nestedDissectionCells", "reuse",
+            "maxReuseIterations", "strategy", "ordering"
+        },
+        "linear solver umfpack"
+    );
 
     // The pattern alone (no values: they change, the analysis holds for
     // every matrix of the pattern)

@@ -1,0 +1,267 @@
+/*---------------------------------------------------------------------------*\
+License
+    This file is part of triboFoam.
+
+    triboFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by the
+    Free Software Foundation, either version 3 of the License, or (at your
+    option) any later version. See <https://www.gnu.org/licenses/>.
+
+    SPDX-License-Identifier: GPL-3.0-or-later
+
+Description
+    The strict keyword check (src/strictDictionary/strictDictionary.H):
+      - the suggestion: a misspelt keyword (one or two letters wrong,
+        swapped, missing or extra, or another case) finds the keyword
+        meant; a word far from every known keyword finds none;
+      - check() accepts a dictionary of known keywords and refuses an
+        unknown one with a message naming the keyword, the suggestion and
+        the file;
+      - the file of an entry #include'd into a dictionary is that file,
+        and nameAfterSource() names it in the dictionary's name;
+      - every friction law accepts its full dictionary (all optional
+        keywords given) and refuses one unknown keyword added to it.
+
+\*---------------------------------------------------------------------------*/
+
+#include "unitTest.H"
+#include "strictDictionary.H"
+#include "frictionLaw.H"
+#include "IStringStream.H"
+#include "IFstream.H"
+#include "OFstream.H"
+#include "OSspecific.H"
+
+using namespace Foam;
+
+namespace
+{
+
+//- The message of the FatalIOError check() throws ("" if none)
+std::string refusal(const dictionary& dict, const wordList& known)
+{
+    try
+    {
+        strictDictionary::check(dict, known, "test");
+    }
+    catch (const Foam::IOerror& e)
+    {
+        return std::string(e.message()) + " file: " + e.ioFileName();
+    }
+    return "";
+}
+
+
+//- The message of the FatalIOError the law's constructor throws
+std::string lawRefusal(const std::string& text)
+{
+    try
+    {
+        IStringStream is(text);
+        dictionary d(is);
+        frictionLaw::New(d);
+    }
+    catch (const Foam::IOerror& e)
+    {
+        return std::string(e.message());
+    }
+    return "";
+}
+
+bool has(const std::string& s, const std::string& part)
+{
+    return s.find(part) != std::string::npos;
+}
+
+} // End anonymous namespace
+
+
+int main()
+{
+    FatalIOError.throwExceptions();
+    FatalError.throwExceptions();
+
+    Info<< "Suggestions" << endl;
+    const wordList known
+    ({
+        "penaltyScale", "tangentialPenaltyScale", "searchDistance",
+        "contactSmoothing", "frictionLaw", "obstacle", "value", "type", "mu",
+        "KN"
+    });
+    const std::pair<word, word> near[] =
+    {
+        {"penaltyScal", "penaltyScale"},        // a letter missing
+        {"penaltyScalee", "penaltyScale"},      // a letter more
+        {"searchDistanse", "searchDistance"},   // a letter wrong
+        {"contactSmoohting", "contactSmoothing"},  // two swapped
+        {"FrictionLaw", "frictionLaw"},         // case
+        {"obstacles", "obstacle"},
+        {"KNN", "KN"},
+        {"vlaue", "value"}
+    };
+    for (const auto& c : near)
+    {
+        unitTest::checkTrue
+        (
+            c.first + " -> " + c.second,
+            strictDictionary::nearest(c.first, known) == c.second
+        );
+    }
+    unitTest::checkTrue
+    (
+        "yieldStress -> no suggestion",
+        strictDictionary::nearest("yieldStress", known).empty()
+    );
+    unitTest::checkTrue
+    (
+        "origin -> no suggestion",
+        strictDictionary::nearest("origin", known).empty()
+    );
+    {
+        const wordList k({"predictor", "predictorContact", "checkJacobian",
+                          "checkJacobianStep"});
+        unitTest::checkTrue
+        (
+            "predictorContacts -> predictorContact, not the prefix predictor",
+            strictDictionary::nearest("predictorContacts", k)
+         == "predictorContact"
+        );
+        unitTest::checkTrue
+        (
+            "checkJacobianSteps -> checkJacobianStep",
+            strictDictionary::nearest("checkJacobianSteps", k)
+         == "checkJacobianStep"
+        );
+    }
+    unitTest::checkTrue
+    (
+        "sub -> no suggestion (two edits are too many for three letters)",
+        strictDictionary::nearest("sub", known).empty()
+    );
+
+    Info<< "check()" << endl;
+    {
+        IStringStream is("type coulomb; mu 0.3; sub { a 1; }");
+        dictionary d(is);
+        unitTest::checkTrue
+        (
+            "known keywords (a sub-dictionary among them) accepted",
+            refusal(d, wordList({"type", "mu", "sub"})).empty()
+        );
+        d.add("penaltyScal", 10);
+        wordList withSub(known);
+        withSub.append("sub");
+        const std::string m = refusal(d, withSub);
+        unitTest::checkTrue("unknown keyword refused", !m.empty());
+        unitTest::checkTrue
+        (
+            "message names the keyword and the suggestion",
+            has(m, "'penaltyScal'") && has(m, "Did you mean 'penaltyScale'")
+        );
+        d.add(keyType("(a|b)", keyType::REGEX), 1);
+        d.remove("penaltyScal");
+        unitTest::checkTrue
+        (
+            "a regular-expression keyword is left alone",
+            refusal(d, wordList({"type", "mu", "sub"})).empty()
+        );
+    }
+
+    Info<< "The file of an #include'd entry" << endl;
+    {
+        const fileName dir("strictDictionaryFiles");
+        mkDir(dir);
+        {
+            OFstream os(dir/"lawDict");
+            os  << "type coulomb;\nmu 0.3;\nmuStatc 0.4;\n";
+        }
+        {
+            OFstream os(dir/"D");
+            os  << "bottom\n{\n    type frictionalContact;\n"
+                << "    frictionLaw\n    {\n        #include \"lawDict\"\n"
+                << "    }\n}\n";
+        }
+        IFstream is(dir/"D");
+        dictionary top(is);
+        dictionary law(top.subDict("bottom").subDict("frictionLaw"));
+        const fileName src(strictDictionary::sourceFile(law));
+        unitTest::checkTrue
+        (
+            "sourceFile of the law's entries is lawDict (" + src + ")",
+            src.name() == "lawDict"
+        );
+        strictDictionary::nameAfterSource(law);
+        unitTest::checkTrue
+        (
+            "nameAfterSource names the #include'd file (" + law.name() + ")",
+            has(law.name(), "lawDict") && has(law.name(), "frictionLaw")
+        );
+        const std::string m = refusal(law, wordList({"type", "mu"}));
+        unitTest::checkTrue
+        (
+            "the refusal names lawDict, not D",
+            has(m, "muStatc") && has(m, "lawDict")
+        );
+        rmDir(dir);
+    }
+
+    Info<< "Friction laws: full dictionaries accepted, one more refused"
+        << endl;
+    const std::string base("KN 1e12; KT 1e12; ");
+    const std::string laws[] =
+    {
+        "type coulomb; mu 0.3; muStatic 0.4;",
+        "type frictionless;",
+        "type curnier; criterion coulomb; f 0.3; C 0; QT 0; Q 0;"
+        " referencePressure 1;",
+        "type rateState; form standard; a 0.01; b 0.015; muStar 0.6;"
+        " VStar 1e-6; creepVelocity 1e-12; initialSlipRate 1e-6;"
+        " stateLaw ageing; L 1e-5;",
+        "type rateState; a 0.01; b 0.015; muStar 0.6; VStar 1e-6;"
+        " stateLaw relaxation; relaxationTime 1; gamma 1;",
+        "type lubricatedRateState; M 0.1; D0 1e-6; creepVelocity 1e-9;"
+        " muStatic 0.12; muDynamic 0.07; criticalVelocity 1e-3;"
+        " filmViscosity 3e11; filmMemoryDistance 0; freshContactAge creep;"
+        " slipRateRange (1e-9 1); contactPressureRange (1e6 1e9);"
+        " lubrication { type constant; alpha 0.3; }",
+        "type lubricatedRateState; M 0.1; D0 1e-6; creepVelocity 1e-9;"
+        " muStatic 0.12; muDynamic 0.07; criticalVelocity 1e-3;"
+        " filmViscosity 3e11; lubrication { type stribeck;"
+        " filmThickness 1e-7; referenceFilmThickness 1e-6;"
+        " referenceVelocity 1; n 1; }"
+    };
+    for (const std::string& l : laws)
+    {
+        const std::string name(l.substr(0, l.find(';')));
+        const std::string ok = lawRefusal(base + l);
+        unitTest::checkTrue(name + ": full dictionary accepted", ok.empty());
+        if (!ok.empty())
+        {
+            Info<< "    " << ok.c_str() << endl;
+        }
+        const std::string m = lawRefusal(base + l + " unknownKeyword 1;");
+        unitTest::checkTrue
+        (
+            name + ": unknownKeyword refused", has(m, "unknownKeyword")
+        );
+    }
+    {
+        const std::string m = lawRefusal
+        (
+            base + "type lubricatedRateState; M 0.1; D0 1e-6;"
+            " creepVelocity 1e-9; muStatic 0.12; muDynamic 0.07;"
+            " criticalVelocity 1e-3; filmViscosity 3e11;"
+            " lubrication { type constant; alpha 0.3; alpah 0.3; }"
+        );
+        unitTest::checkTrue
+        (
+            "lubrication weight: 'alpah' refused, 'alpha' suggested",
+            has(m, "alpah") && has(m, "Did you mean 'alpha'")
+        );
+    }
+
+    return unitTest::exitCode();
+}
+
+
+// ************************************************************************* //
