@@ -136,9 +136,9 @@ def _distanceToPolyline(p, poly):
     best = float("inf")
     for a, b in zip(poly[:-1], poly[1:]):
         dx, dy = b[0] - a[0], b[1] - a[1]
-        L2 = dx*dx + dy*dy
-        s = 0.0 if L2 == 0 else max(0.0, min(1.0, ((p[0] - a[0])*dx
-                                                  + (p[1] - a[1])*dy)/L2))
+        lengthSqr = dx*dx + dy*dy
+        s = 0.0 if lengthSqr == 0 else max(0.0, min(1.0, ((p[0] - a[0])*dx
+                                                  + (p[1] - a[1])*dy)/lengthSqr))
         best = min(best, math.hypot(p[0] - a[0] - s*dx, p[1] - a[1] - s*dy))
     return best
 

@@ -32,6 +32,20 @@ void releaseLock()
     }
 }
 
+
+//- A parallel run that stops with an error on another processor is ended
+//  by MPI with SIGTERM (after MPI_Abort): the lock goes with it, as at a
+//  normal exit; then the default action
+void releaseLockAndTerminate(int sig)
+{
+    if (!heldLock.empty())
+    {
+        ::unlink(heldLock.c_str());
+    }
+    std::signal(sig, SIG_DFL);
+    std::raise(sig);
+}
+
 //- Create the lock file exclusively with "host pid"; false if it exists
 bool createLock(const std::string& path, const std::string& content)
 {
@@ -97,6 +111,7 @@ Foam::caseLock::caseLock(const Time& runTime, const word& application)
         {
             heldLock = path;
             std::atexit(releaseLock);
+            std::signal(SIGTERM, releaseLockAndTerminate);
             return;
         }
 
