@@ -65,10 +65,14 @@ Foam::linearSolvers::eigenLU::eigenLU
     strictDictionary::check
     (
         dict,
-        {
-            "type", "directCellLimit", "nestedDissectionCells", "reuse",
-            "maxReuseIterations"
-        },
+        defaultChoiceKeywords
+        (
+            dict,
+            {
+                "type", "directCellLimit", "nestedDissectionCells", "reuse",
+                "maxReuseIterations"
+            }
+        ),
         "linear solver " + dict.getOrDefault<word>("type", "eigenLU")
     );
     gmres_.preconditioner().set(lu_);

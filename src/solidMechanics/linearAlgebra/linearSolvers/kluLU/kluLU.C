@@ -99,10 +99,14 @@ Foam::linearSolvers::kluLU::kluLU
     strictDictionary::check
     (
         dict,
-        {
-            "type", "directCellLimit", "nestedDissectionCells",
-            "refactorTolerance"
-        },
+        defaultChoiceKeywords
+        (
+            dict,
+            {
+                "type", "directCellLimit", "nestedDissectionCells",
+                "refactorTolerance"
+            }
+        ),
         "linear solver klu"
     );
 

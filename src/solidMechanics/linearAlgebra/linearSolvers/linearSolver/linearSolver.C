@@ -27,4 +27,21 @@ Foam::linearSolver::linearSolver
 {}
 
 
+
+
+Foam::wordList Foam::linearSolver::defaultChoiceKeywords
+(
+    const dictionary& dict,
+    std::initializer_list<word> own
+)
+{
+    wordList known(own);
+    if (!dict.found("type"))
+    {
+        known.append("options");
+    }
+    return known;
+}
+
+
 // ************************************************************************* //

@@ -183,10 +183,14 @@ Foam::linearSolvers::umfpackLU::umfpackLU
     strictDictionary::check
     (
         dict,
-        {
-            "type", "directCellLimit", "nestedDissectionCells", "reuse",
-            "maxReuseIterations", "strategy", "ordering"
-        },
+        defaultChoiceKeywords
+        (
+            dict,
+            {
+                "type", "directCellLimit", "nestedDissectionCells", "reuse",
+                "maxReuseIterations", "strategy", "ordering"
+            }
+        ),
         "linear solver umfpack"
     );
 
