@@ -279,18 +279,16 @@ void Foam::contactFaces::requireState(const dictionary& dict) const
 
 void Foam::contactFaces::readAugmentation(const dictionary& dict)
 {
-    // [C5c] on by default with the automatic (soft) penalty; an explicit
-    // penaltyScale alone asks for the plain penalty
+    // [C5b]; 'yes' with the automatic soft penalty and tolerance [C5c]
     const entry* e = dict.findEntry("augmentedLagrangian", keyType::LITERAL);
     augmented_ =
-        !e ? !dict.found("penaltyScale")
-      : e->isDict() || dict.get<bool>("augmentedLagrangian");
+        e && (e->isDict() || dict.get<bool>("augmentedLagrangian"));
     if (!augmented_)
     {
         return;
     }
-    // a dictionary names its tolerance; the default (or 'yes') takes
-    // 1e-4 of the largest cell depth [C5c]
+    // a dictionary names its tolerance; 'yes' takes 1e-4 of the largest
+    // cell depth [C5c]
     const dictionary empty(dict, dictionary());
     const bool given = e && e->isDict();
     const dictionary& a = given ? e->dict() : empty;
@@ -341,7 +339,7 @@ void Foam::contactFaces::readContactFaces(const dictionary& dict)
     strictDictionary::nameAfterSource(lawDict_);
     readAugmentation(dict);
     // [C5], [C5c] stiff for the plain penalty and a given augmentation
-    // (its tolerance chosen for it), soft for the default augmentation
+    // (its tolerance chosen for it), soft for 'augmentedLagrangian yes'
     const bool defaultAugmentation =
         augmented_ && !dict.isDict("augmentedLagrangian");
     penaltyScale_ =
