@@ -10,8 +10,8 @@ License
     SPDX-License-Identifier: GPL-3.0-or-later
 \*---------------------------------------------------------------------------*/
 
-#include <boost/math/distributions/students_t.hpp>
 #include "frictionFit.H"
+#include "leastSquaresIntervals.H"
 #include "frictionPointDriver.H"
 #include "lawParameters.H"
 #include "quietMessages.H"
@@ -234,22 +234,10 @@ Foam::frictionFit::result Foam::frictionFit::fit(const scalar confidence) const
     {
         J.col(j) /= res.value[j];
     }
-    const scalar ssr = r.squaredNorm();
-    res.rms = std::sqrt(ssr/n);
-    const scalar s2 = ssr/res.dof;
-    const Eigen::MatrixXd cov =
-        s2*(J.transpose()*J).ldlt().solve(Eigen::MatrixXd::Identity(nP, nP));
-    const scalar t = boost::math::quantile
-    (
-        boost::math::students_t(res.dof), 0.5 + 0.5*confidence
-    );
-    res.stdError.setSize(nP);
-    res.halfWidth.setSize(nP);
-    for (label j = 0; j < nP; ++j)
-    {
-        res.stdError[j] = std::sqrt(max(cov(j, j), scalar(0)));
-        res.halfWidth[j] = t*res.stdError[j];
-    }
+    const leastSquaresIntervals ci(r, J, confidence);
+    res.rms = ci.rms;
+    res.stdError = ci.stdError;
+    res.halfWidth = ci.halfWidth;
     res.nEvaluations = nEval;
     return res;
 }
