@@ -218,6 +218,9 @@ int main(int argc, char *argv[])
             const scalar failedTime = runTime.value();
             const scalar failedDeltaT = runTime.deltaTValue();
             runTime.TimeState::operator=(lastConverged);
+            // The failed attempt's iterate goes with it: the solid holds
+            // the last converged state again (what a write shows)
+            solid.restoreCommitted();
 
             if (action == timeStepController::STOP)
             {

@@ -13,6 +13,7 @@ License
 
 #include "testIdentification.H"
 #include "error.H"
+#include "eigenResiduals.H"
 #include <unsupported/Eigen/NonLinearOptimization>
 
 // * * * * * * * * * * * * * * * Local Classes * * * * * * * * * * * * * * * //
@@ -23,20 +24,24 @@ namespace Foam
 //- The residuals of an identification as Eigen's functor, of
 //  x = 1 + ln(p/p0)
 struct testIdentificationResiduals
+:
+    public eigenResiduals
 {
-    typedef double Scalar;
-    enum
-    {
-        InputsAtCompileTime = Eigen::Dynamic,
-        ValuesAtCompileTime = Eigen::Dynamic
-    };
-    typedef Eigen::VectorXd InputType;
-    typedef Eigen::VectorXd ValueType;
-    typedef Eigen::MatrixXd JacobianType;
-
     testIdentification* id;
     scalarList p0;
     int nOut;
+
+    testIdentificationResiduals
+    (
+        testIdentification* id,
+        const scalarList& p0,
+        const int nOut
+    )
+    :
+        id(id),
+        p0(p0),
+        nOut(nOut)
+    {}
 
     int inputs() const { return p0.size(); }
     int values() const { return nOut; }
@@ -215,7 +220,7 @@ Foam::testIdentification::result Foam::testIdentification::fit
             << " identification needs more points than parameters"
             << exit(FatalError);
     }
-    testIdentificationResiduals f{this, p0, int(n)};
+    testIdentificationResiduals f(this, p0, int(n));
 
     // The start: its run must give values, and each parameter must move
     // the model (else the case does not read the law, or the parameter

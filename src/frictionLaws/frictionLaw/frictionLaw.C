@@ -36,19 +36,6 @@ Foam::frictionLaw::frictionLaw(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::frictionLaw::setPenalties(const scalar KN, const scalar KT)
-{
-    if (!(KN > 0) || !(KT > 0))
-    {
-        FatalErrorInFunction
-            << "penalties must be > 0, got KN = " << KN << ", KT = " << KT
-            << exit(FatalError);
-    }
-    KN_ = KN;
-    KT_ = KT;
-}
-
-
 Foam::frictionState Foam::frictionLaw::initialState() const
 {
     return frictionState();

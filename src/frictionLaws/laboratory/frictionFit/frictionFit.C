@@ -16,6 +16,7 @@ License
 #include "lawParameters.H"
 #include "quietMessages.H"
 #include "error.H"
+#include "eigenResiduals.H"
 #include <Eigen/Dense>
 #include <unsupported/Eigen/NonLinearOptimization>
 #include <unsupported/Eigen/NumericalDiff>
@@ -27,21 +28,27 @@ namespace Foam
 
 //- The residuals of a fit as Eigen's functor, of x = ln(p/p_start)
 struct frictionFitResiduals
+:
+    public eigenResiduals
 {
-    typedef double Scalar;
-    enum
-    {
-        InputsAtCompileTime = Eigen::Dynamic,
-        ValuesAtCompileTime = Eigen::Dynamic
-    };
-    typedef Eigen::VectorXd InputType;
-    typedef Eigen::VectorXd ValueType;
-    typedef Eigen::MatrixXd JacobianType;
-
     const frictionFit* fit;
     int nIn;
     int nOut;
     label* nEval;
+
+    frictionFitResiduals
+    (
+        const frictionFit* fit,
+        const int nIn,
+        const int nOut,
+        label* nEval
+    )
+    :
+        fit(fit),
+        nIn(nIn),
+        nOut(nOut),
+        nEval(nEval)
+    {}
 
     int inputs() const { return nIn; }
     int values() const { return nOut; }
@@ -204,7 +211,7 @@ Foam::frictionFit::result Foam::frictionFit::fit(const scalar confidence) const
 {
     const label nP = names_.size(), n = data_.t.size();
     label nEval = 0;
-    frictionFitResiduals f{this, int(nP), int(n), &nEval};
+    frictionFitResiduals f(this, int(nP), int(n), &nEval);
     Eigen::NumericalDiff<frictionFitResiduals, Eigen::Central> nd(f);
     Eigen::LevenbergMarquardt
     <

@@ -123,12 +123,4 @@ Foam::frictionLaws::coded::coded(const dictionary& dict)
 }
 
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::frictionLaws::coded::setPenalties(const scalar KN, const scalar KT)
-{
-    frictionLaw::setPenalties(KN, KT);
-    redirect_->setPenalties(KN, KT);
-}
-
 // ************************************************************************* //

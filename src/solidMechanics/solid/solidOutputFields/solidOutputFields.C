@@ -29,7 +29,7 @@ static IOobject outputIO(const fvMesh& mesh, const word& name)
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::solidOutputFields::solidOutputFields(totalLagrangianSolid& solid)
+Foam::solidOutputFields::solidOutputFields(const totalLagrangianSolid& solid)
 :
     solid_(solid),
     sigma_
@@ -83,8 +83,6 @@ Foam::solidOutputFields::solidOutputFields(totalLagrangianSolid& solid)
 
 void Foam::solidOutputFields::update()
 {
-    // after failed attempts the discretisation holds their last iterate
-    solid_.restoreCommitted();
     const solidDiscretisation& disc = solid_.discretisation();
 
     symmTensorField sigma;
