@@ -5,7 +5,9 @@ License
     triboFoam is free software: you can redistribute it and/or modify it
     under the terms of the GNU General Public License as published by the
     Free Software Foundation, either version 3 of the License, or (at your
-    option) any later version. See <http://www.gnu.org/licenses/>.
+    option) any later version. See <https://www.gnu.org/licenses/>.
+
+    SPDX-License-Identifier: GPL-3.0-or-later
 
 Application
     largeStrainSolidFoam
@@ -196,8 +198,12 @@ int main(int argc, char *argv[])
             retry = action == timeStepController::RETRY;
             if (retry)
             {
+                // The last resort before a cut-back: say what failed
                 Info<< "    retrying the step without the predictor,"
-                    << " Jacobian-free" << endl;
+                    << " Jacobian-free: the exact-Jacobian Newton stopped ("
+                    << res.reason.c_str() << ") after " << res.newtonIterations
+                    << " iterations, force residual " << res.forceResidual
+                    << endl;
             }
         }
         res.newtonIterations = nNewton;

@@ -2,7 +2,8 @@
 # triboFoam: what a forming zoo run cost, read from the solver's log
 # (largeStrainSolidFoam's lines, applications/solvers/largeStrainSolidFoam):
 #   Time = <t>, deltaT = <dt>                 an attempt at a load step
-#   retrying the step without the predictor, Jacobian-free
+#   retrying the step without the predictor, Jacobian-free: the exact-Jacobian
+#   Newton stopped (<reason>) after <n> iterations, force residual <r>
 #   accepted: Newton stalled at force residual <f> (acceptableForceTolerance)
 #   step not converged (<why>) after <n> Newton iterations, ...
 #   cutting the time step back to <dt> s and retrying (<i> of <max>)
