@@ -260,12 +260,15 @@ bool Foam::linearSolvers::petscSolver::shiftZeroPivots()
     // the coarse operator P^T M P has zero rows and columns there (exact
     // zeros: 1 such cell on the first upsetting3D Jacobian at 13 824
     // cells, 9 at 110 592, 8 aggregates of 194 on the two Hertz spheres;
-    // interior cells, not contact rows). SOR's zero pivot then failed the
-    // set-up (SUBPC_ERROR). Those rows and their restricted residuals are
-    // exact zeros, so any pivot there gives the correction 0: SOR's
-    // diagonal shift replaces the zero pivots, from the first set-up.
-    // Relative to the largest diagonal entry, far below every nonzero one
-    // (doc/performance.md sections 15 and 18.2)
+    // interior cells, not contact rows). SOR, block-wise over PETSc's
+    // inodes (a cell's unknowns), then met the singular block
+    // (SUBPC_ERROR). Those rows and their restricted residuals are exact
+    // zeros, so any pivot there gives the correction 0: SOR's diagonal
+    // shift replaces the zero pivots, from the first set-up. Relative to
+    // the largest diagonal entry, far below every nonzero one. With a
+    // shift PETSc's SOR works point by point, not on the cell blocks:
+    // more Krylov iterations where nothing fails (doc/performance.md
+    // sections 15 and 18.2)
     Vec d = nullptr;
     PetscReal maxDiagonal = 0;
     check(VecDuplicate(A_.x(), &d), "creating a vector");

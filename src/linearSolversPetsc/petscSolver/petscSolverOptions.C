@@ -90,14 +90,17 @@ void Foam::linearSolvers::petscSolver::readKeywords()
     }
     view_ = dict_.lookupOrDefault<bool>("view", false);
 
-    // GAMG's and ML's near-null space. 3-D default: the translations. On
-    // the contact Jacobians of the forming zoo the rigid-body modes of the
-    // cell centres took more Krylov iterations, not fewer (upsetting3D at
-    // 13 824 cells: 41-71 against 89-500 for the same Jacobians, the
-    // 3-D ring at 101 520 cells: 16 % more), twice the set-up, and
-    // GAMG's one-cell aggregates give them zero coarse rows
-    // (doc/performance.md sections 15 and 18.2). 2-D and BoomerAMG
-    // (whose vector interpolation, an option, uses them): the modes
+    // GAMG's and ML's near-null space. 3-D default: the translations.
+    // From about 10 000 cells GAMG's aggregation leaves some cells alone,
+    // whose 3 unknowns cannot carry the 6 rigid-body modes: the coarse
+    // operator's cell block there is singular, and SOR, which PETSc runs
+    // block-wise over the cells (inodes), meets its zero pivots. With
+    // those cells the modes took far more Krylov iterations than the
+    // translations on the same contact Jacobians (upsetting3D at 13 824
+    // cells: 55-500 against 41-71), without them about as many (1 728
+    // cells), with twice the set-up (doc/performance.md sections 15 and
+    // 18.2). 2-D and BoomerAMG (whose vector interpolation, an option,
+    // uses them): the modes
     const word nullSpace = dict_.lookupOrDefault<word>
     (
         "nearNullSpace",
@@ -118,9 +121,10 @@ void Foam::linearSolvers::petscSolver::readKeywords()
     // zero pivots from the first set-up: the rows of one-cell aggregates'
     // rotations are exact zeros on the coarse levels, their corrections
     // too, so any pivot there does ([S16], doc/performance.md sections 15
-    // and 18.2). Without the shift such a set-up fails, and the failure is
-    // the caller's (the step is rejected): no other near-null space is
-    // taken behind the user's back
+    // and 18.2); PETSc's SOR is then point-wise instead of block-wise (what
+    // the modes lose on the 3-D ring). Without the shift such a set-up
+    // fails, and the failure is the caller's (the step is rejected): no
+    // other near-null space is taken behind the user's back
     shiftZeroPivots_ = dict_.lookupOrDefault<bool>("shiftZeroPivots", true);
 
     // Off by default: on the 3-D ring it saved 11 % of the CPU at 31 000
