@@ -184,6 +184,12 @@ bool Foam::linearSolvers::petscSolver::update()
         {
             setNearNullSpace();
         }
+        if (shiftZeroPivots())
+        {
+            // KSPSetFromOptions reads the shift: a solver afresh
+            check(KSPDestroy(&ksp_), "destroying the solver");
+            createKsp();
+        }
     }
 
     // reusePreconditioner: the preconditioner of an earlier Jacobian
@@ -213,25 +219,7 @@ bool Foam::linearSolvers::petscSolver::update()
         return true;
     }
     reused_ = false;
-    return setUpFallingBack();
-}
-
-
-bool Foam::linearSolvers::petscSolver::setUpFallingBack()
-{
-    while (!setUpPreconditioner())
-    {
-        if (!useTranslations())
-        {
-            return false;
-        }
-        check
-        (
-            KSPSetOperators(ksp_, A_.mat(), A_.mat()),
-            "setting the operator"
-        );
-    }
-    return true;
+    return setUpPreconditioner();
 }
 
 
@@ -245,16 +233,17 @@ void Foam::linearSolvers::petscSolver::setNearNullSpace()
             "building the rigid-body modes"
         );
     }
-    Info<< "Linear solver petsc: near-null space: ";
     if (nModes_ > 0)
     {
-        Info<< nModes_ << " rigid-body modes of the cell centres" << endl;
+        Info<< "Linear solver petsc: near-null space: " << nModes_
+            << " rigid-body modes of the cell centres" << endl;
     }
-    else
+    else if (rigidBodyModes_)
     {
-        Info<< "the " << matrix_.nComponents() << " translations of the"
-            << " block size"
-            << (rigidBodyModes_ ? " (no cell coordinates given)" : "")
+        // The description said the modes
+        Info<< "Linear solver petsc: near-null space: the "
+            << matrix_.nComponents() << " translations of the block size"
+            << " (no cell coordinates given for the rigid-body modes)"
             << endl;
     }
 }
@@ -264,7 +253,7 @@ bool Foam::linearSolvers::petscSolver::shiftZeroPivots()
 {
     if
     (
-        !shiftZeroPivots_ || shifted_ || pcName_ != "gamg"
+        !shiftZeroPivots_ || shifted_ || nModes_ <= 0 || pcName_ != "gamg"
      || matrix_.nComponents() != 3
     )
     {
@@ -272,19 +261,21 @@ bool Foam::linearSolvers::petscSolver::shiftZeroPivots()
     }
     shifted_ = true;
     // [S16] GAMG's aggregation leaves some cells alone (aggregates of one
-    // cell, where a maximal independent set found no neighbour left):
-    // 3 unknowns cannot carry the 6 modes, so the prolongator's 3 rotation
-    // columns of such an aggregate are zero and the coarse operator
-    // P^T M P has zero rows and columns there (8 of 194 aggregates on the
-    // first Jacobian of the two Hertz spheres at 15 588 cells, exactly 0).
-    // SOR's zero pivot then failed the set-up (SUBPC_ERROR). Those rows
-    // and their restricted residuals are exact zeros, so any pivot there
-    // gives the correction 0: SOR's diagonal shift replaces the zero
-    // pivots. Relative to the largest diagonal entry, far below every
-    // nonzero one (doc/performance.md section 15). Only after a failure:
-    // a nonzero shift takes another path through PETSc's SOR, which
-    // changed the Krylov counts of the 3-D ring (+1-27 %), where the
-    // modes never failed
+    // cell, whose neighbours a maximal independent set gave to other
+    // roots): 3 unknowns cannot carry the 6 modes, so the tentative
+    // prolongator's 3 rotation columns of such an aggregate are zero and
+    // the coarse operator P^T M P has zero rows and columns there (exact
+    // zeros: 1 such cell on the first upsetting3D Jacobian at 13 824
+    // cells, 9 at 110 592, 8 aggregates of 194 on the two Hertz spheres;
+    // interior cells, not contact rows). SOR, block-wise over PETSc's
+    // inodes (a cell's unknowns), then met the singular block
+    // (SUBPC_ERROR). Those rows and their restricted residuals are exact
+    // zeros, so any pivot there gives the correction 0: SOR's diagonal
+    // shift replaces the zero pivots, from the first set-up. Relative to
+    // the largest diagonal entry, far below every nonzero one. With a
+    // shift PETSc's SOR works point by point, not on the cell blocks:
+    // more Krylov iterations where nothing fails (doc/performance.md
+    // sections 15 and 18.2)
     Vec d = nullptr;
     PetscReal maxDiagonal = 0;
     check(VecDuplicate(A_.x(), &d), "creating a vector");
@@ -295,9 +286,8 @@ bool Foam::linearSolvers::petscSolver::shiftZeroPivots()
     shift.precision(3);
     shift<< std::scientific << 1e-14*std::max(maxDiagonal, PetscReal(1e-280));
     setDefault("mg_levels_pc_sor_diagonal_shift", shift.str().c_str());
-    Info<< "Linear solver petsc: the set-up failed with the rigid-body"
-        << " modes: SOR's zero pivots shifted by " << shift.str().c_str()
-        << " from now on" << endl;
+    Info<< "Linear solver petsc: SOR's zero pivots (one-cell aggregates'"
+        << " rotations) shifted by " << shift.str().c_str() << endl;
     return true;
 }
 
@@ -306,29 +296,6 @@ bool Foam::linearSolvers::petscSolver::aggregationMultigrid() const
 {
     // Only the smoothed-aggregation multigrids build on a near-null space
     return pcName_ == "gamg" || pcName_ == "ml";
-}
-
-
-bool Foam::linearSolvers::petscSolver::useTranslations()
-{
-    if (!rigidBodyModes_ || nModes_ <= 0 || !aggregationMultigrid())
-    {
-        return false;
-    }
-    // First SOR's shift of the zero pivots, then the translations ([S16]:
-    // one-cell aggregates give the coarse levels zero rows; the
-    // translations' coarse diagonals are sums of the fine ones)
-    if (shiftZeroPivots())
-    {
-        return true;
-    }
-    check(MatSetNearNullSpace(A_.mat(), nullptr), "removing the modes");
-    rigidBodyModes_ = false;
-    nModes_ = 0;
-    Info<< "Linear solver petsc: the set-up failed with the rigid-body"
-        << " modes: near-null space the " << matrix_.nComponents()
-        << " translations from now on" << endl;
-    return true;
 }
 
 
@@ -459,16 +426,10 @@ Foam::linearSolver::performance Foam::linearSolvers::petscSolver::solve
     p = krylovSolve(bp, xp, relTol);
     lastIterations_ = p.iterations;
 
-    // A kept preconditioner that no longer does, or a multigrid that failed
-    // in its first application (a zero pivot of a level's SOR: shift the
-    // pivots, else the translations): build it for this matrix and solve
-    // again from the caller's initial guess
+    // A kept preconditioner that no longer does: build it for this matrix
+    // and solve again from the caller's initial guess
     label itsBefore = 0;
-    while
-    (
-        !p.converged
-     && (reused_ || (pcFailed() && useTranslations()))
-    )
+    while (!p.converged && reused_)
     {
         if (debug && reused_)
         {
@@ -494,7 +455,7 @@ Foam::linearSolver::performance Foam::linearSolvers::petscSolver::solve
             KSPSetOperators(ksp_, A_.mat(), A_.mat()),
             "setting the operator"
         );
-        if (!setUpFallingBack())
+        if (!setUpPreconditioner())
         {
             p = performance();
             p.reason = "the preconditioner set-up failed: " + setUpFailure_;
@@ -506,6 +467,18 @@ Foam::linearSolver::performance Foam::linearSolvers::petscSolver::solve
     }
     p.iterations += itsBefore;
     lastConverged_ = p.converged;
+    if (!p.converged && pcFailed())
+    {
+        // A preconditioner that failed in its application (a zero pivot
+        // met in a solve): PETSc keeps its state, so the next update()
+        // starts afresh; the failure is the caller's (no other
+        // preconditioner or near-null space behind the user's back)
+        setUpFailure_ = p.reason;
+        setUp_ = false;
+        check(KSPDestroy(&ksp_), "destroying the solver");
+        createKsp();
+        return p;
+    }
     check(A_.fromPetsc(xp, x), "copying the solution");
 
     if (view_ && !checkedOptions_)

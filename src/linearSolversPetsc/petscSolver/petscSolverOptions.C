@@ -97,10 +97,23 @@ void Foam::linearSolvers::petscSolver::readKeywords()
     }
     view_ = dict_.lookupOrDefault<bool>("view", false);
 
-    // The rigid-body modes, replaced by the translations when a set-up
-    // or its first application fails with them (useTranslations)
-    const word nullSpace =
-        dict_.lookupOrDefault<word>("nearNullSpace", "rigidBodyModes");
+    // GAMG's and ML's near-null space. 3-D default: the translations.
+    // From about 10 000 cells GAMG's aggregation leaves some cells alone,
+    // whose 3 unknowns cannot carry the 6 rigid-body modes: the coarse
+    // operator's cell block there is singular, and SOR, which PETSc runs
+    // block-wise over the cells (inodes), meets its zero pivots. With
+    // those cells the modes took far more Krylov iterations than the
+    // translations on the same contact Jacobians (upsetting3D at 13 824
+    // cells: 55-500 against 41-71), without them about as many (1 728
+    // cells), with twice the set-up (doc/performance.md sections 15 and
+    // 18.2). 2-D and BoomerAMG (whose vector interpolation, an option,
+    // uses them): the modes
+    const word nullSpace = dict_.lookupOrDefault<word>
+    (
+        "nearNullSpace",
+        pcName_ != "boomerAMG" && matrix_.nComponents() == 3
+      ? "translations" : "rigidBodyModes"
+    );
     if (nullSpace != "rigidBodyModes" && nullSpace != "translations")
     {
         FatalIOErrorInFunction(dict_)
@@ -111,14 +124,15 @@ void Foam::linearSolvers::petscSolver::readKeywords()
     }
     rigidBodyModes_ = nullSpace == "rigidBodyModes";
 
-    // Off by default: after a failed set-up with the modes, SOR's shift of
-    // the zero pivots keeps the modes instead of the translations. On the
-    // 3-D ring at 101 520 cells on 2 processors (a set-up that fails with
-    // the modes) it cost 16 % more Krylov iterations and 75 % more set-up
-    // than the translations (23.9 against 19.0 s per load step), on the
-    // two spheres the modes saved 5-15 % of the iterations
-    // (doc/performance.md section 15)
-    shiftZeroPivots_ = dict_.lookupOrDefault<bool>("shiftZeroPivots", false);
+    // With the rigid-body modes, SOR on GAMG's levels (3-D) shifts its
+    // zero pivots from the first set-up: the rows of one-cell aggregates'
+    // rotations are exact zeros on the coarse levels, their corrections
+    // too, so any pivot there does ([S16], doc/performance.md sections 15
+    // and 18.2); PETSc's SOR is then point-wise instead of block-wise (what
+    // the modes lose on the 3-D ring). Without the shift such a set-up
+    // fails, and the failure is the caller's (the step is rejected): no
+    // other near-null space is taken behind the user's back
+    shiftZeroPivots_ = dict_.lookupOrDefault<bool>("shiftZeroPivots", true);
 
     // Off by default: on the 3-D ring it saved 11 % of the CPU at 31 000
     // cells (GAMG's set-up is cheap next to its solves) but raised the
@@ -347,6 +361,28 @@ Foam::string Foam::linearSolvers::petscSolver::describe() const
     MatGetType(A_.mat(), &matType);
     d += ", matrix " + std::string(matType ? matType : "?")
         + " (block size " + std::to_string(matrix_.nComponents()) + ")";
+    if (aggregationMultigrid() || pcName_ == "boomerAMG")
+    {
+        // Said once at the start, with the preconditioner it is for
+        d += std::string(", near-null space ")
+          + (
+                rigidBodyModes_
+              ? "the rigid-body modes of the cell centres"
+              : "the " + std::to_string(matrix_.nComponents())
+              + " translations of the block size"
+            )
+          + (dict_.found("nearNullSpace") ? "" : " (default)");
+        if
+        (
+            rigidBodyModes_ && pcName_ == "gamg"
+         && matrix_.nComponents() == 3
+        )
+        {
+            d += shiftZeroPivots_
+              ? " with SOR's zero pivots shifted"
+              : " without SOR's zero-pivot shift (shiftZeroPivots no)";
+        }
+    }
     if (reuse_)
     {
         d += ", preconditioner reused while the solves take at most "
