@@ -73,6 +73,22 @@ bool running(const long pid, const std::string& application)
     {
         return false;
     }
+    // a killed run's process that its parent has not reaped yet (an MPI
+    // rank while mpirun tears the job down) is a zombie: no longer a run
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    std::string statLine;
+    if (stat && std::getline(stat, statLine))
+    {
+        const std::string::size_type close = statLine.rfind(')');
+        if
+        (
+            close != std::string::npos && close + 2 < statLine.size()
+         && (statLine[close + 2] == 'Z' || statLine[close + 2] == 'X')
+        )
+        {
+            return false;
+        }
+    }
     // a process id reused by another program is no run of the application
     std::ifstream comm("/proc/" + std::to_string(pid) + "/comm");
     std::string name;
@@ -147,7 +163,15 @@ Foam::caseLock::caseLock(const Time& runTime, const word& application)
                 << " the lock file if no run is using the case" << nl
                 << exit(FatalError);
         }
-        if (running(pid, application))
+        // a run that has just been stopped may take a moment to go: look
+        // again for a few seconds before calling the case in use
+        bool inUse = running(pid, application);
+        for (int wait = 0; inUse && wait < 3; ++wait)
+        {
+            ::sleep(1);
+            inUse = running(pid, application);
+        }
+        if (inUse)
         {
             FatalErrorInFunction
                 << "The case " << runTime.globalPath() << " is in use: "
