@@ -209,23 +209,13 @@ void Foam::simulationModel::setCase(const fileName& caseDir)
 
 Foam::scalarList Foam::simulationModel::start(const dictionary& dict) const
 {
-    scalarList p(names_.size());
-    forAll(names_, i)
-    {
-        p[i] = lawParameters::get(lawDict_, names_[i], dict, "parameters");
-    }
-    return p;
+    return lawParameters::get(lawDict_, names_, dict, "parameters");
 }
 
 
 Foam::dictionary Foam::simulationModel::lawDict(const scalarList& p) const
 {
-    dictionary d(lawDict_);
-    forAll(names_, i)
-    {
-        lawParameters::set(d, names_[i], p[i]);
-    }
-    return d;
+    return lawParameters::with(lawDict_, names_, p);
 }
 
 

@@ -138,12 +138,7 @@ Foam::frictionFit::frictionFit
 
 Foam::dictionary Foam::frictionFit::lawDict(const scalarList& p) const
 {
-    dictionary d(lawDict_);
-    forAll(names_, i)
-    {
-        lawParameters::set(d, names_[i], p[i]);
-    }
-    return d;
+    return lawParameters::with(lawDict_, names_, p);
 }
 
 

@@ -95,4 +95,37 @@ void Foam::lawParameters::set
 }
 
 
+Foam::scalarList Foam::lawParameters::get
+(
+    const dictionary& lawDict,
+    const wordList& paths,
+    const dictionary& asker,
+    const word& key
+)
+{
+    scalarList values(paths.size());
+    forAll(paths, i)
+    {
+        values[i] = get(lawDict, paths[i], asker, key);
+    }
+    return values;
+}
+
+
+Foam::dictionary Foam::lawParameters::with
+(
+    const dictionary& lawDict,
+    const wordList& paths,
+    const scalarList& values
+)
+{
+    dictionary d(lawDict);
+    forAll(paths, i)
+    {
+        set(d, paths[i], values[i]);
+    }
+    return d;
+}
+
+
 // ************************************************************************* //
