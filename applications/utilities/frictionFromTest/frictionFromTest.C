@@ -65,7 +65,8 @@ Usage
 
 #include "argList.H"
 #include "IFstream.H"
-#include "OFstream.H"
+#include "reportFiles.H"
+#include "StringStream.H"
 #include "OSspecific.H"
 #include "Random.H"
 #include "clockTime.H"
@@ -78,18 +79,6 @@ using namespace Foam;
 
 namespace
 {
-
-void checkWritten(OFstream& os)
-{
-    os.flush();
-    if (!os.good())
-    {
-        FatalErrorInFunction
-            << "Writing " << os.name() << " failed (the disk may be full)"
-            << exit(FatalError);
-    }
-}
-
 
 scalar positive(const dictionary& dict, const word& key, const scalar def)
 {
@@ -171,57 +160,37 @@ void writeFitTable
             ++k;
         }
     }
-    checkWritten(os);
+    reportFiles::checkWritten(os);
 }
 
 
 void plot(const fileName& dir, const testMeasurements& meas)
 {
-    if (Foam::system("command -v gnuplot > /dev/null 2>&1") != 0)
-    {
-        WarningInFunction << "gnuplot not found: no plot written" << endl;
-        return;
-    }
     const label n = meas.all().size();
-    const fileName gp(dir/"fit.gp");
+    OStringStream os;
+    os  << "set multiplot layout " << n << ",1" << nl;
+    for (const testMeasurements::series& s : meas.all())
     {
-        OFstream os(gp);
-        os  << "set terminal pngcairo size 900," << 500*n << nl
-            << "set output '" << (dir/"fit.png").c_str() << "'" << nl
-            << "set grid" << nl
-            << "set multiplot layout " << n << ",1" << nl;
-        for (const testMeasurements::series& s : meas.all())
-        {
-            const std::string fit = "'" + dir/"fit.dat" + "'";
-            // A scalar series: its measurements against their row, the
-            // model's value a line
-            const std::string model =
-                s.responseEntry.empty()
-              ? "'" + dir/(s.name + ".dat") + "' u 1:2 w l lw 2"
-              : fit + " u (strcol(1) eq '" + s.name + "' ? $0 : NaN):5"
-                " w l lw 2";
-            os  << "set title 'frictionFromTest: " << s.name.c_str()
-                << "'" << nl
-                << "set xlabel '" << s.xLabel.c_str() << "'" << nl
-                << "set ylabel '" << s.yLabel.c_str() << "'" << nl
-                << "plot " << model.c_str() << " t 'model at the fit', "
-                << fit.c_str() << " u (strcol(1) eq '" << s.name.c_str()
-                << "' ? $2 : NaN):3 w p pt 7 ps 1.2 t 'measured', "
-                << fit.c_str() << " u (strcol(1) eq '" << s.name.c_str()
-                << "' ? $2 : NaN):4 w lp dt 2 t 'model at the stage start'" << nl;
-        }
-        os  << "unset multiplot" << nl;
-        checkWritten(os);
+        const std::string fit = "'" + dir/"fit.dat" + "'";
+        // A scalar series: its measurements against their row, the model's
+        // value a line. The series name in column 1 is a string: gnuplot
+        // compares with 'eq'
+        const std::string model =
+            s.responseEntry.empty()
+          ? "'" + dir/(s.name + ".dat") + "' u 1:2 w l lw 2"
+          : fit + " u (strcol(1) eq '" + s.name + "' ? $0 : NaN):5"
+            " w l lw 2";
+        os  << "set title 'frictionFromTest: " << s.name.c_str() << "'" << nl
+            << "set xlabel '" << s.xLabel.c_str() << "'" << nl
+            << "set ylabel '" << s.yLabel.c_str() << "'" << nl
+            << "plot " << model.c_str() << " t 'model at the fit', "
+            << fit.c_str() << " u (strcol(1) eq '" << s.name.c_str()
+            << "' ? $2 : NaN):3 w p pt 7 ps 1.2 t 'measured', "
+            << fit.c_str() << " u (strcol(1) eq '" << s.name.c_str()
+            << "' ? $2 : NaN):4 w lp dt 2 t 'model at the stage start'" << nl;
     }
-    // The series name in column 1 is a string: gnuplot compares with 'eq'
-    if (Foam::system("gnuplot '" + gp + "' > /dev/null 2>&1") == 0)
-    {
-        Info<< "Plot: " << dir/"fit.png" << endl;
-    }
-    else
-    {
-        WarningInFunction << "gnuplot failed on " << gp << endl;
-    }
+    os  << "unset multiplot" << nl;
+    reportFiles::gnuplot(dir/"fit", os.str(), 900, 500*n);
 }
 
 }
@@ -374,7 +343,7 @@ int main(int argc, char *argv[])
         {
             os  << xy[0][i] << ' ' << xy[1][i] << nl;
         }
-        checkWritten(os);
+        reportFiles::checkWritten(os);
     }
     {
         OFstream os(outDir/"fittedLawDict");
@@ -388,7 +357,7 @@ int main(int argc, char *argv[])
                 << " % interval; start " << res.start[j] << ")" << nl;
         }
         model.lawDict(res.value).write(os, false);
-        checkWritten(os);
+        reportFiles::checkWritten(os);
     }
 
     // The bootstrap: synthetic measurements around the fit
@@ -429,7 +398,7 @@ int main(int argc, char *argv[])
             }
             Info<< (all ? " covers" : " misses") << " the fit" << endl;
         }
-        checkWritten(os);
+        reportFiles::checkWritten(os);
         Info<< "Bootstrap: the intervals cover the fit in " << covered
             << " of " << nBoot << " sets" << nl << endl;
     }
@@ -451,7 +420,7 @@ int main(int argc, char *argv[])
             os  << "bootstrapSets " << nBoot << nl
                 << "bootstrapCovered " << covered << nl;
         }
-        checkWritten(os);
+        reportFiles::checkWritten(os);
     }
     plot(outDir, meas);
 

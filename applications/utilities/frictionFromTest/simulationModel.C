@@ -15,7 +15,7 @@ License
 #include "lawParameters.H"
 #include "quietMessages.H"
 #include "IFstream.H"
-#include "OFstream.H"
+#include "reportFiles.H"
 #include "OSspecific.H"
 #include "clockTime.H"
 #include "error.H"
@@ -93,13 +93,7 @@ void Foam::simulationModel::prepare(const run& r) const
     os.precision(15);
     os  << "// The friction law of one run of frictionFromTest" << nl;
     lawDict(r.p).write(os, false);
-    os.flush();
-    if (!os.good())
-    {
-        FatalErrorInFunction
-            << "Writing " << os.name() << " failed (the disk may be full)"
-            << exit(FatalError);
-    }
+    reportFiles::checkWritten(os);
 }
 
 

@@ -16,9 +16,7 @@ Description
 
 #include "driverModes.H"
 #include "frictionParameters.H"
-#include "OFstream.H"
-#include <unistd.h>
-#include "OSspecific.H"
+#include "reportFiles.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -78,45 +76,6 @@ Foam::scalarList Foam::driverModes::logRange
 }
 
 
-void Foam::driverModes::checkWritable
-(
-    const dictionary& dict,
-    const word& key,
-    const fileName& path
-)
-{
-    const fileName dir(path.path().empty() ? fileName(".") : path.path());
-    const bool ok =
-        !isDir(path) && isDir(dir) && ::access(dir.c_str(), W_OK) == 0
-     && (!exists(path) || ::access(path.c_str(), W_OK) == 0);
-    if (!ok)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword '" << key << "' in " << dict.name() << ": cannot"
-            << " write " << path << " ("
-            << (
-                   isDir(path) ? "it is a folder"
-                 : !isDir(dir) ? "no folder " + dir
-                 : "not writable"
-               ).c_str()
-            << "); expected a file in an existing, writable folder" << nl
-            << exit(FatalIOError);
-    }
-}
-
-
-void Foam::driverModes::checkWritten(OFstream& os)
-{
-    os.flush();
-    if (!os.good())
-    {
-        FatalErrorInFunction
-            << "Writing " << os.name() << " failed (the disk may be full)"
-            << nl << exit(FatalError);
-    }
-}
-
-
 void Foam::driverModes::plot
 (
     const dictionary& dict,
@@ -128,28 +87,7 @@ void Foam::driverModes::plot
     {
         return;
     }
-    if (Foam::system("command -v gnuplot > /dev/null 2>&1") != 0)
-    {
-        WarningInFunction << "gnuplot not found: no plot written" << endl;
-        return;
-    }
-    const fileName png = output.lessExt() + ".png";
-    const fileName gp = output.lessExt() + ".gp";
-    {
-        OFstream os(gp);
-        os  << "set terminal pngcairo size 900,900\n"
-            << "set output '" << png.c_str() << "'\n"
-            << "set grid\n" << script.c_str();
-        driverModes::checkWritten(os);
-    }
-    if (Foam::system("gnuplot '" + gp + "'") == 0)
-    {
-        Info<< "Plot: " << png << endl;
-    }
-    else
-    {
-        WarningInFunction << "gnuplot failed on " << gp << endl;
-    }
+    reportFiles::gnuplot(output.lessExt(), script);
 }
 
 

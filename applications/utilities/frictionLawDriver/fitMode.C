@@ -104,14 +104,14 @@ void Foam::driverModes::fit(const dictionary& dict, const fileName& output)
             os  << rec.t[i] << ' ' << rec.mu[i] << ' ' << muStart[i] << ' '
                 << muFit[i] << nl;
         }
-        driverModes::checkWritten(os);
+        reportFiles::checkWritten(os);
     }
 
     const fileName lawFile
     (
         d.getOrDefault<fileName>("lawDictionary", "fittedLawDict")
     );
-    driverModes::checkWritable(d, "lawDictionary", lawFile);
+    reportFiles::checkWritable(d, "lawDictionary", lawFile);
     {
         OFstream os(lawFile);
         os.precision(10);
@@ -124,7 +124,7 @@ void Foam::driverModes::fit(const dictionary& dict, const fileName& output)
                 << " % interval; start " << r.start[j] << ")" << nl;
         }
         f.lawDict(r.value).write(os, false);
-        driverModes::checkWritten(os);
+        reportFiles::checkWritten(os);
     }
 
     Info<< "Fit of " << r.names << " to " << rec.t.size() << " rows ("

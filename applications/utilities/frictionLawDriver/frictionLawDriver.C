@@ -89,7 +89,7 @@ int main(int argc, char *argv[])
     (
         dict.getOrDefault<fileName>("output", "frictionLawDriver.dat")
     );
-    driverModes::checkWritable(dict, "output", output);
+    reportFiles::checkWritable(dict, "output", output);
 
     // Strict keywords (strictDictionary.H): the driver's own, and those of
     // the sub-dictionary of each mode (the law checks its own)

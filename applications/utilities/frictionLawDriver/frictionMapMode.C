@@ -153,7 +153,7 @@ void Foam::driverModes::frictionMap
         }
         script += "\n";
     }
-    driverModes::checkWritten(os);
+    reportFiles::checkWritten(os);
     plot(dict, output, script + "unset multiplot\n");
 }
 

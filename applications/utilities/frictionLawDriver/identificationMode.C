@@ -109,19 +109,19 @@ void Foam::driverModes::identification
                 << id.a()[i] << ' ' << id.b()[i] << ' ' << id.dFssdV()[i]
                 << nl;
         }
-        driverModes::checkWritten(os);
+        reportFiles::checkWritten(os);
     }
 
     const fileName lawFile
     (
         d.getOrDefault<fileName>("lawDictionary", "relaxationLawDict")
     );
-    driverModes::checkWritable(d, "lawDictionary", lawFile);
+    reportFiles::checkWritable(d, "lawDictionary", lawFile);
     {
         OFstream os(lawFile);
         os.precision(10);
         id.writeLaw(os);
-        driverModes::checkWritten(os);
+        reportFiles::checkWritten(os);
     }
 
     const label pct = label(std::round(100*level));

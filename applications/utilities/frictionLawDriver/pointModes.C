@@ -83,7 +83,7 @@ static void writeRows
             << dict.get<scalar>("contactPressure") << nl;
         drv.writeHeader(os, springSlider);
         drv.write(os, rows, springSlider);
-        driverModes::checkWritten(os);
+        reportFiles::checkWritten(os);
     }
     Info<< "Wrote " << rows.size() << " rows to " << output << endl;
 

@@ -86,7 +86,7 @@ void Foam::driverModes::stability
             }
             os  << nl;
         }
-        driverModes::checkWritten(os);
+        reportFiles::checkWritten(os);
     }
     Info<< "Wrote k_c and omega_c at " << V.size() << " velocities for "
         << masses.size() << " masses to " << output << endl;

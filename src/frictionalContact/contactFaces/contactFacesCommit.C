@@ -17,7 +17,7 @@ Description
 
 #include "contactFaces.H"
 #include "volFields.H"
-#include "OFstream.H"
+#include "reportFiles.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -132,13 +132,7 @@ void Foam::contactFaces::writeIntegrals() const
         << totalDissipation_ << ' ' << maxPenetration_ << ' '
         << maxPenetrationAt_.x() << ' ' << maxPenetrationAt_.y() << ' '
         << maxPenetrationAt_.z() << ' ' << nContact_ << ' ' << nSlip_ << nl;
-    os.flush();
-    if (!os.good())
-    {
-        FatalErrorInFunction
-            << "Writing " << file << " failed (the disk may be full or the"
-            << " folder not writable)" << nl << exit(FatalError);
-    }
+    reportFiles::checkWritten(os);
 }
 
 
