@@ -58,6 +58,35 @@ int main()
         " tau = mu*tN*k/(k + mu*tN);"
         " dtauDtN = mu*sqr(k/(k + mu*tN)); #};";
 
+    // strict like every law, for an administrator too: a misspelled
+    // keyword is refused before any compilation, with the keyword meant
+    bool typoRefused = false;
+    try
+    {
+        frictionTest::law
+        (
+            "type coded; name typoLaw; KN 1; KT 1; rateDependant true;"
+            " code #{ tau = 0; #};"
+        );
+    }
+    catch (const Foam::IOerror& e)
+    {
+        const std::string m(e.message());
+        typoRefused =
+            m.find("rateDependant") != std::string::npos
+         && m.find("Did you mean 'rateDependent'") != std::string::npos;
+    }
+    unitTest::checkTrue
+    (
+        "misspelled keyword: FatalIOError naming it and the one meant",
+        typoRefused
+    );
+    unitTest::checkTrue
+    (
+        "misspelled keyword: nothing compiled",
+        !isDir(scratch/"dynamicCode"/"typoLaw")
+    );
+
     if (isAdministrator())
     {
         bool refused = false;

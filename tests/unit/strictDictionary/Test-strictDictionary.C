@@ -202,6 +202,38 @@ int main()
             "the refusal names lawDict, not D",
             has(m, "muStatc") && has(m, "lawDict")
         );
+
+        // the same written on one line: 'frictionLaw { #include "lawDict" }'
+        // (read raw, the directive must not take the closing brace)
+        {
+            OFstream os(dir/"D1");
+            os  << "bottom\n{\n    type frictionalContact;\n"
+                << "    frictionLaw { #include \"lawDict\" }\n"
+                << "    // frictionLaw { #include \"lawDict\" } }\n"
+                << "    note \"#include \\\"x\\\" }\";\n}\n";
+        }
+        IFstream is1(dir/"D1");
+        dictionary top1(is1);
+        dictionary law1(top1.subDict("bottom").subDict("frictionLaw"));
+        const fileName src1(strictDictionary::sourceFile(law1));
+        unitTest::checkTrue
+        (
+            "one-line #include: sourceFile is lawDict (" + src1 + ")",
+            src1.name() == "lawDict"
+        );
+        const std::string m1 = refusal(law1, wordList({"type", "mu"}));
+        unitTest::checkTrue
+        (
+            "one-line #include: the refusal names lawDict",
+            has(m1, "muStatc") && has(m1, "file: " + dir/"lawDict")
+        );
+        const std::string m2 =
+            refusal(top1.subDict("bottom"), wordList({"type", "frictionLaw"}));
+        unitTest::checkTrue
+        (
+            "one-line #include: the patch's own refusal names D1, not lawDict",
+            has(m2, "note") && has(m2, "D1") && !has(m2, "lawDict")
+        );
         rmDir(dir);
     }
 

@@ -86,6 +86,16 @@ Foam::frictionLaws::coded::coded(const dictionary& dict)
     dict_(dict),
     name_(dict.get<word>("name"))
 {
+    // before the library is made: a misspelled keyword is refused at once,
+    // not after a compilation (and the compiled law reads only these)
+    checkKeywords
+    (
+        dict,
+        {
+            "name", "needsShearYield", "rateDependent",
+            "code", "codeInclude", "codeOptions", "codeLibs", "localCode"
+        }
+    );
     if (!dict.found("code"))
     {
         FatalIOErrorInFunction(dict)

@@ -17,6 +17,7 @@ License
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <fcntl.h>
 #include <fstream>
 #include <string>
@@ -152,6 +153,35 @@ Foam::caseLock::caseLock(const Time& runTime, const word& application)
             is >> lockHost >> pid;
         }
 
+        if (lockHost.empty())
+        {
+            // a run writes "host pid" the instant it creates the lock: one
+            // still empty 5 s after its last change was left by a run
+            // killed as it started (or on a full disk), and no run holds it
+            while
+            (
+                lockHost.empty() && exists(path, false)
+             && std::time(nullptr) - lastModified(path, false) < 5
+            )
+            {
+                ::sleep(1);
+                is.close();
+                is.clear();
+                is.open(path.c_str());
+                is >> lockHost >> pid;
+            }
+            if (lockHost.empty())
+            {
+                if (exists(path, false))
+                {
+                    Info<< "Lock file " << path << " is empty, unchanged"
+                        << " for 5 s or more (a run killed as it started, or"
+                        << " a full disk): taken over" << nl << endl;
+                    ::unlink(path.c_str());
+                }
+                continue;
+            }
+        }
         if (lockHost != host)
         {
             FatalErrorInFunction
@@ -181,7 +211,8 @@ Foam::caseLock::caseLock(const Time& runTime, const word& application)
                 << " time directories" << nl << exit(FatalError);
         }
         Info<< "Lock file " << path << " of process " << pid << ", which no"
-            << " longer runs (a run killed or crashed): taken over" << nl
+            << " longer runs (a run killed, crashed or ended by MPI_Abort):"
+            << " taken over" << nl
             << endl;
         ::unlink(path.c_str());
     }

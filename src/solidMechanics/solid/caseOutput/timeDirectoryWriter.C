@@ -12,12 +12,14 @@ License
 
 #include "timeDirectoryWriter.H"
 #include "OFstream.H"
+#include "IOdictionary.H"
 #include "OSspecific.H"
 #include "Pstream.H"
 #include <csignal>
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <sstream>
 #include <unistd.h>
 
@@ -25,6 +27,15 @@ License
 
 namespace Foam
 {
+
+//- Time's precision for the time value of uniform/time
+struct timePrecision
+:
+    public Time
+{
+    using Time::maxPrecision_;
+};
+
 
 //- Print on the master, or on every processor with its number
 static Ostream& report()
@@ -229,13 +240,17 @@ Foam::timeDirectoryWriter::timeDirectoryWriter(const Time& runTime)
         }
         if
         (
-            (faultKind_ != "kill" && faultKind_ != "fail")
+            (
+                faultKind_ != "kill" && faultKind_ != "killIn"
+             && faultKind_ != "fail"
+            )
          || faultAfter_ < 0 || faultDir_ < 1
         )
         {
             FatalErrorInFunction
                 << "Environment variable TRIBOFOAM_WRITE_FAULT is '"
-                << hook.c_str() << "'; expected 'kill N M' or 'fail N M'"
+                << hook.c_str() << "'; expected 'kill N M', 'killIn N M'"
+                << " or 'fail N M'"
                 << " with N >= 0, M >= 1 (a test hook: stop the writer after"
                 << " N files of the M-th time directory written)" << nl
                 << exit(FatalError);
@@ -318,6 +333,31 @@ void Foam::timeDirectoryWriter::write(regIOobject& marker)
                 << " files of " << dir << endl;
             ::kill(::getpid(), SIGKILL);
         }
+        if (faulty && nWritten_ == faultAfter_ && faultKind_ == "killIn")
+        {
+            // the file the run was writing when killed, where the writer
+            // puts it (its temporary name, if any): cut short in its last
+            // entry (before its last ';'), so that it does not parse
+            writer();
+            const fileName p(path());
+            std::ifstream is(p.c_str(), std::ios::binary);
+            std::string text
+            (
+                (std::istreambuf_iterator<char>(is)),
+                std::istreambuf_iterator<char>()
+            );
+            is.close();
+            std::ofstream os(p.c_str(), std::ios::binary | std::ios::trunc);
+            const std::size_t cut = text.rfind(';');
+            os.write
+            (
+                text.data(), cut == std::string::npos ? text.size()/2 : cut
+            );
+            os.close();
+            Info<< "TRIBOFOAM_WRITE_FAULT: killed in the write of " << p
+                << " after " << nWritten_ << " files of " << dir << endl;
+            ::kill(::getpid(), SIGKILL);
+        }
         if (faulty && nWritten_ == faultAfter_ && faultKind_ == "fail")
         {
             fail(path(), "TRIBOFOAM_WRITE_FAULT: a simulated failure");
@@ -350,35 +390,74 @@ void Foam::timeDirectoryWriter::write(regIOobject& marker)
         );
     }
 
-    // Time's own dictionary (read by Time before the solver can check the
-    // directory) after the fields: an incomplete directory mostly lacks it
-    writeFile
-    (
-        [&]() { return runTime_.writeTimeDict(); },
-        [&]() { return fileName(dir/"uniform"/"time"); }
-    );
-
-    // The mark last, complete or not at all: written aside, then renamed
-    marker.instance() = runTime_.timeName();
-    const fileName aside = markerFile + ".writing";
-    writeFile
-    (
-        [&]()
-        {
-            mkDir(markerFile.path());
-            OFstream os(aside);
-            bool ok = os.good() && marker.writeHeader(os);
-            ok = ok && marker.writeData(os);
-            IOobject::writeEndDivider(os);
-            os.flush();
-            return ok && os.good();
-        },
-        [&]() { return aside; }
-    );
-    if (!mv(aside, markerFile))
+    // One file complete or not at all: written aside, then renamed
+    auto writeAside = [&](const regIOobject& obj, const fileName& file)
     {
-        fail(markerFile, "renaming " + aside + " failed");
+        const fileName aside = file + ".writing";
+        writeFile
+        (
+            [&]()
+            {
+                mkDir(file.path());
+                OFstream os(aside);
+                bool ok = os.good() && obj.writeHeader(os);
+                ok = ok && obj.writeData(os);
+                IOobject::writeEndDivider(os);
+                os.flush();
+                return ok && os.good();
+            },
+            [&]() { return aside; }
+        );
+        if (!mv(aside, file))
+        {
+            fail(file, "renaming " + aside + " failed");
+        }
+    };
+
+    // Time's own dictionary after the fields (an incomplete directory
+    // mostly lacks it), written aside like the mark: Time reads it from
+    // the latest directory before the solver can step back from an
+    // incomplete one, and one cut short (a run killed while writing it)
+    // would stop every restart. The entries of Time::writeTimeDict
+    {
+        IOdictionary timeDict
+        (
+            IOobject
+            (
+                "time",
+                runTime_.timeName(),
+                "uniform",
+                runTime_,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE,
+                false
+            )
+        );
+        timeDict.add
+        (
+            "value",
+            Time::timeName
+            (
+                runTime_.timeToUserTime(runTime_.value()),
+                timePrecision::maxPrecision_
+            )
+        );
+        timeDict.add("name", string(runTime_.timeName()));
+        timeDict.add("index", runTime_.timeIndex());
+        timeDict.add
+        (
+            "deltaT", runTime_.timeToUserTime(runTime_.deltaTValue())
+        );
+        timeDict.add
+        (
+            "deltaT0", runTime_.timeToUserTime(runTime_.deltaT0Value())
+        );
+        writeAside(timeDict, dir/"uniform"/"time");
     }
+
+    // The mark last
+    marker.instance() = runTime_.timeName();
+    writeAside(marker, markerFile);
 
     // purgeWrite: the oldest complete directories removed, once the new
     // one is complete

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "solidDiscretisation.H"
+#include "strictDictionary.H"
 #include "calculatedFvPatchFields.H"
 #include "ListListOps.H"
 #include "solidRestartState.H"
@@ -418,6 +419,15 @@ Foam::solidDiscretisation::solidDiscretisation
     }
 
     const dictionary& schemes = mesh_.schemesDict();
+    // the solver discretises the momentum balance itself: of fvSchemes it
+    // reads d2dt2Schemes' default alone, and a per-field entry there
+    // ('d2dt2(D) Euler;') or a misspelled 'default' would be ignored
+    strictDictionary::check
+    (
+        schemes.subDict("d2dt2Schemes"), {"default"},
+        "largeStrainSolidFoam reads only 'default' there: steadyState"
+        " (quasi-static) or Euler (inertia)"
+    );
     const word d2dt2(schemes.subDict("d2dt2Schemes").get<word>("default"));
     if (d2dt2 == "Euler")
     {
