@@ -99,6 +99,18 @@ Foam::deformableContactFvPatchVectorField::partner() const
 }
 
 
+const Foam::fvPatch*
+Foam::deformableContactFvPatchVectorField::partnerBodyPatch() const
+{
+    // The mesh's patch, not its condition: the penalties are set while D's
+    // boundary conditions are still being constructed
+    return &patch().boundaryMesh()
+    [
+        patch().boundaryMesh().findPatchID(partnerName_)
+    ];
+}
+
+
 const Foam::deformableContactFvPatchVectorField&
 Foam::deformableContactFvPatchVectorField::slaveSide() const
 {
