@@ -22,11 +22,10 @@ License
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::scalar Foam::contactFaces::automaticPenalty(const scalar scale) const
+Foam::scalar Foam::contactFaces::cellStiffness(const fvPatch& p)
 {
-    // [C5] a face penalty as stiff as penaltyScale cells of the solid, of
-    // the body the patch belongs to [C9]
-    const fvPatch& p = contactPatch();
+    // [C5] E'/h of the body that holds the patch's cells [C9], h the mean
+    // depth V/|S| of those cells
     const fvMesh& mesh = p.boundaryMesh().mesh();
     const labelUList& fc = p.faceCells();
     const scalar Eprime = bodyLaws::planeStrainModulus
@@ -45,7 +44,23 @@ Foam::scalar Foam::contactFaces::automaticPenalty(const scalar scale) const
         returnReduce(sumDepth, sumOp<scalar>())
        /max(returnReduce(fc.size(), sumOp<label>()), 1);
 
-    return scale*Eprime/max(h, VSMALL);
+    return Eprime/max(h, VSMALL);
+}
+
+
+Foam::scalar Foam::contactFaces::automaticPenalty(const scalar scale) const
+{
+    // [C5] a face penalty as stiff as penaltyScale cells of the solid; for
+    // two deformable bodies, cells of the softer side [C5d], so that a
+    // stiff slave does not make the penalty stiff against the body that
+    // deforms (and a rigid partner's limit is the obstacle's penalty)
+    scalar k = cellStiffness(contactPatch());
+    const fvPatch* other = partnerBodyPatch();
+    if (other)
+    {
+        k = min(k, cellStiffness(*other));
+    }
+    return scale*k;
 }
 
 

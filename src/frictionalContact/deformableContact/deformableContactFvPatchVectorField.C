@@ -99,6 +99,18 @@ Foam::deformableContactFvPatchVectorField::partner() const
 }
 
 
+const Foam::fvPatch*
+Foam::deformableContactFvPatchVectorField::partnerBodyPatch() const
+{
+    // The mesh's patch, not its condition: the penalties are set while D's
+    // boundary conditions are still being constructed
+    return &patch().boundaryMesh()
+    [
+        patch().boundaryMesh().findPatchID(partnerName_)
+    ];
+}
+
+
 const Foam::deformableContactFvPatchVectorField&
 Foam::deformableContactFvPatchVectorField::slaveSide() const
 {
@@ -173,10 +185,20 @@ void Foam::deformableContactFvPatchVectorField::checkPair() const
         }
     }
 
-    // Bodies that overlap at the start (a mesh or a restart displacement
+    // Bodies that overlap at the start (a mesh or an initial displacement
     // in which a slave face lies behind the master surface by more than 1 %
-    // of its cell depth: no penalty pushes them apart gently)
-    if (mesh.time().timeIndex() <= mesh.time().startTimeIndex() + 1)
+    // of its cell depth: no penalty pushes them apart gently). Not at a
+    // restart: its displacement is a converged solution, whose faces
+    // penetrate by the penalty's tN/KN ([C5], [C5d]), several per cent of
+    // a cell depth where a stiff body's corner presses into a soft one
+    const Time& runTime = mesh.time();
+    const bool restart = isFile
+    (
+        runTime.path()/runTime.timeName(runTime.startTime().value())
+       /"uniform"/"solidState",
+        false
+    );
+    if (!restart && runTime.timeIndex() <= runTime.startTimeIndex() + 1)
     {
         const deformableContactFvPatchVectorField& s = slaveSide();
         side sl;
