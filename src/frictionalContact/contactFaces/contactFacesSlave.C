@@ -62,6 +62,15 @@ void Foam::contactFaces::evaluateSlaveFace
     {
         faceUpdate(i, in, sf.result);
     }
+
+    // [S14c] a face predicted to close: the penalty's line through its
+    // gap (a pull while open), no friction
+    const scalar pen = augmentedPenetration(i, sf.gap);
+    if (predictedClosed(i) && pen < contactSmoothing_)
+    {
+        sf.result.tN = law().KN()*pen;
+        sf.result.tT = Zero;
+    }
 }
 
 
@@ -111,15 +120,32 @@ void Foam::contactFaces::slaveFaceTangent
     frictionResult res;
     law().update(old, in, res);
 
+    // [S14c] a face predicted to close: the penalty's line through its
+    // gap, no friction (evaluateSlaveFace)
+    const bool lineOnly = predictedClosed(i) && pen < contactSmoothing_;
+    if (lineOnly)
+    {
+        res.tN = law().KN()*pen;
+        res.dtNdgN = law().KN();
+        res.tT = Zero;
+    }
+
     // gN = smoothed(-gap) [C2b]; gT = (I - n n).v [C3]
-    const vector dgNdx(-smoothedPenetrationSlope(pen)*mp.dgapdx);
+    const vector dgNdx
+    (
+        -(lineOnly ? 1 : smoothedPenetrationSlope(pen))*mp.dgapdx
+    );
     const tensor dvdx(tensor::I - mp.dmotiondx);
     const tensor dgTdx((P & dvdx) - (n & v)*N - n*(N.T() & v));
 
     // the law's tangent [F7]; on a curved master also the turn of the
     // tangent plane inside the law, by central differences in n
-    tensor dtTdx((res.dtTdgT & dgTdx) + res.dtTdgN*dgNdx);
-    if (magSqr(N) > 0)
+    tensor dtTdx(Zero);
+    if (!lineOnly)
+    {
+        dtTdx = (res.dtTdgT & dgTdx) + res.dtTdgN*dgNdx;
+    }
+    if (!lineOnly && magSqr(N) > 0)
     {
         const scalar h = 1e-6;
         vector t1(P & vector(1, 0, 0));
@@ -194,6 +220,32 @@ Foam::scalar Foam::contactFaces::contactOnsetFraction
         }
     }
     return returnReduce(fraction, minOp<scalar>());
+}
+
+
+Foam::label Foam::contactFaces::markPredictedClosed
+(
+    const scalarField& p0,
+    const scalarField& p1
+)
+{
+    // [S14c] the faces [S14b] would stop at
+    const scalar e = contactSmoothing_;
+    if (predictedClosed_.size() != p0.size())
+    {
+        predictedClosed_.setSize(p0.size());
+        predictedClosed_ = false;
+    }
+    label nNew = 0;
+    forAll(p0, i)
+    {
+        if (!predictedClosed_[i] && p0[i] < -e && p1[i] > e)
+        {
+            predictedClosed_[i] = true;
+            ++nNew;
+        }
+    }
+    return returnReduce(nNew, sumOp<label>());
 }
 
 

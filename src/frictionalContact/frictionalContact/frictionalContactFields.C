@@ -87,6 +87,18 @@ Foam::scalar Foam::frictionalContactFvPatchVectorField::firstContactFraction
 }
 
 
+Foam::label Foam::frictionalContactFvPatchVectorField::predictContacts
+(
+    const solidPatchKinematics& k0,
+    const solidPatchKinematics& k1
+)
+{
+    // [S14c] the faces [S14b] stops at, the obstacle at the end of the step
+    const scalarField p0(augmentedPenetrations(surface_->bind(k0)));
+    return markPredictedClosed(p0, augmentedPenetrations(surface_->bind(k1)));
+}
+
+
 void Foam::frictionalContactFvPatchVectorField::release()
 {
     releaseHold();

@@ -97,6 +97,7 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
     (
         dict.lookupOrDefault<bool>("stopAtContactOnset", true)
     ),
+    contactLookAhead_(dict.lookupOrDefault<label>("contactLookAhead", 0)),
     krylovRefresh_(dict.lookupOrDefault<label>("krylovRefresh", 15)),
     augmentInside_
     (
@@ -155,6 +156,13 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
             << " (the multipliers are updated once |R|/|F| is below it"
             << " times forceTolerance)" << nl << exit(FatalIOError);
     }
+    if (contactLookAhead_ < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'contactLookAhead' in dictionary " << dict.name()
+            << " is " << contactLookAhead_ << "; expected a number of"
+            << " linear solves >= 0 (0: off)" << nl << exit(FatalIOError);
+    }
     if (acceptableForceTol_ < 0 || stallIterations_ < 1 || krylovRefresh_ < 0)
     {
         FatalIOErrorInFunction(dict)
@@ -208,8 +216,55 @@ bool Foam::newtonSolver::step
         const scalar tJacobian = timer.cpuTimeIncrement();
         dx.setZero(x.size());
         const scalar normR = gNorm(R);
-        const linearSolver::performance perf =
-            sys.solveJacobian(R, dx, normR > 0 ? min(linTol/normR, 0.1) : 0.1);
+        const scalar relTol = normR > 0 ? min(linTol/normR, 0.1) : 0.1;
+        linearSolver::performance perf = sys.solveJacobian(R, dx, relTol);
+
+        // [S14c] contact faces open at x that the correction closes are
+        // not in this Jacobian: the correction carries them deep into
+        // their obstacles. Solve again with them on the penalty's line
+        // through their gaps (residual and Jacobian at x), until the
+        // correction closes no other face
+        label nLookAhead = 0;
+        if (contactLookAhead_ > 0 && !chord && gFinite(dx))
+        {
+            Eigen::VectorXd Rp(x.size());
+            while
+            (
+                nLookAhead < contactLookAhead_
+             && sys.predictContacts(x, dx) > 0
+            )
+            {
+                ++nLookAhead;
+                evaluate(sys, x, Rp);
+                if (!sys.updateJacobian(x))
+                {
+                    sys.clearPredictedContacts();
+                    res.reason = sys.failure();
+                    return false;
+                }
+                dx.setZero(x.size());
+                const scalar normRp = gNorm(Rp);
+                perf =
+                    sys.solveJacobian
+                    (
+                        Rp, dx, normRp > 0 ? min(linTol/normRp, 0.1) : 0.1
+                    );
+                if (!gFinite(dx))
+                {
+                    break;
+                }
+            }
+            if (nLookAhead > 0)
+            {
+                sys.clearPredictedContacts();
+                res.contactLookAheadSolves += nLookAhead;
+                if (verbose_)
+                {
+                    Info<< "        " << nLookAhead << " look-ahead solves"
+                        << " with the faces the step closes" << endl;
+                }
+            }
+        }
         if (verbose_)
         {
             Info<< "        " << (chord ? "chord step, " : "")

@@ -709,6 +709,50 @@ Foam::scalar Foam::solidDiscretisation::firstContactFraction
 }
 
 
+Foam::label Foam::solidDiscretisation::predictContacts
+(
+    const vectorField& u0,
+    const vectorField& u1
+)
+{
+    const scalar dt = mesh_.time().deltaTValue();
+    PtrList<forceKinematics> k1(mesh_.boundary().size());
+    setIterate(u1);
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (bcs_.kind(patchi) == solidBoundaries::FORCE)
+        {
+            k1.set(patchi, new forceKinematics(*this, patchi, dt));
+        }
+    }
+    setIterate(u0);
+    label nMarked = 0;
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (k1.set(patchi))
+        {
+            const forceKinematics k0(*this, patchi, dt);
+            // every patch (the call is collective)
+            nMarked +=
+                bcs_.forcePatch(patchi).predictContacts(k0.k, k1[patchi].k);
+        }
+    }
+    return nMarked;
+}
+
+
+void Foam::solidDiscretisation::clearPredictedContacts()
+{
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (bcs_.kind(patchi) == solidBoundaries::FORCE)
+        {
+            bcs_.forcePatch(patchi).clearPredictedContacts();
+        }
+    }
+}
+
+
 void Foam::solidDiscretisation::resetAugmentation()
 {
     forAll(mesh_.boundary(), patchi)

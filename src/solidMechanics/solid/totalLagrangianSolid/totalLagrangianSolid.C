@@ -303,6 +303,26 @@ Foam::scalar Foam::totalLagrangianSolid::firstContactFraction
 }
 
 
+Foam::label Foam::totalLagrangianSolid::predictContacts
+(
+    const Eigen::VectorXd& x,
+    const Eigen::VectorXd& dx
+)
+{
+    vectorField u0(mesh_.nCells());
+    vectorField u1(mesh_.nCells());
+    unpack(x, u0);
+    unpack(x + dx, u1);
+    return discretisation_.predictContacts(u0, u1);
+}
+
+
+void Foam::totalLagrangianSolid::clearPredictedContacts()
+{
+    discretisation_.clearPredictedContacts();
+}
+
+
 void Foam::totalLagrangianSolid::commit(const Eigen::VectorXd& x)
 {
     vectorField u(mesh_.nCells());
