@@ -8,7 +8,9 @@
 # own; on a time-out every process of that session is sent SIGTERM (mpirun
 # then stops its ranks), and whatever is left after a grace period SIGKILL.
 # A process can leave its process group but not its session (short of
-# setsid, which daemons call), so the session is what is killed.
+# setsid, which daemons call), so the session is what is killed. For the
+# same reason the runner's own interruption (Ctrl-C, SIGTERM) does not reach
+# the command: run() stops its session before passing the interruption on.
 #
 # License: GPL-3.0-or-later
 # -----------------------------------------------------------------------------
@@ -54,10 +56,21 @@ def killSession(sid, grace=5.0):
     return sessionProcesses(sid)
 
 
+def stopOnTerminate():
+    """SIGTERM raises SystemExit (status 143) in the main thread, as Ctrl-C
+    raises KeyboardInterrupt, so that run() below stops the command's
+    session before the runner goes: the command sits in a session of its
+    own, where neither signal reaches it."""
+    def terminate(signum, frame):
+        raise SystemExit(128 + signum)
+    signal.signal(signal.SIGTERM, terminate)
+
+
 def run(args, cwd, timeout, env=None):
     """Run args (a list) in cwd, stdout and stderr together; returns
     (exit code, or TIMEOUT when the limit was hit and the session killed,
-    output text)."""
+    output text). Interrupted (Ctrl-C, or SIGTERM after stopOnTerminate()),
+    it stops the command's session and passes the interruption on."""
     p = subprocess.Popen(args, cwd=cwd, env=env, stdout=subprocess.PIPE,
                          stderr=subprocess.STDOUT, start_new_session=True)
     try:
@@ -70,6 +83,9 @@ def run(args, cwd, timeout, env=None):
         out += ("\n[timed out after %g s: every process of the command "
                 "killed%s]\n" % (timeout, "" if not left else
                                  "; STILL ALIVE: %s" % left)).encode()
+    except BaseException:
+        killSession(p.pid, grace=2.0)
+        raise
     # leftovers of a command that ended by itself (a solver sent to the
     # background and never waited for) are stopped too
     killSession(p.pid, grace=1.0)

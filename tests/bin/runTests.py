@@ -264,6 +264,7 @@ def main():
         return 1
 
     os.makedirs(resultsDir, exist_ok=True)
+    processTools.stopOnTerminate()
     nPass = nFail = 0
     failed = []
     for kind, group, name, tdir in tests:
@@ -295,4 +296,9 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    try:
+        sys.exit(main())
+    except KeyboardInterrupt:
+        # the running test's processes are stopped (processTools.run)
+        print("\nAlltest: interrupted; the running test's processes stopped")
+        sys.exit(130)

@@ -11,7 +11,9 @@
 #                       stopped: a shell's background children, and
 #                       mpirun with its ranks (which sit in process groups
 #                       of their own); a background process left by a
-#                       command that ended is stopped too;
+#                       command that ended is stopped too; the runner
+#                       stopped by Ctrl-C or SIGTERM stops the command's
+#                       processes;
 #   runTests.copySource only what git tracks reaches the test copy: an
 #                       ignored time directory and an untracked derived
 #                       case left by an earlier run are not copied (and the
@@ -32,6 +34,7 @@ import io
 import math
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -137,6 +140,36 @@ def testTimeout(tmp):
     left = leftovers("733.5")
     check("a background process left by a finished command is stopped",
           rc == 0 and not left, "rc %s, left: %s" % (rc, left))
+
+    # The runner interrupted (Ctrl-C, SIGTERM) while a command runs: the
+    # command's session is stopped with it, though neither signal reaches
+    # that session by itself
+    runner = ("import signal, sys; sys.path.insert(0, %r); "
+              "import processTools; processTools.stopOnTerminate(); "
+              "processTools.run(['bash', '-c', "
+              "'sleep %%s & sleep %%s & wait'], %r, 60)" % (here, tmp))
+    for sig, name, marker in ((signal.SIGINT, "Ctrl-C", "734.5"),
+                              (signal.SIGTERM, "SIGTERM", "735.5")):
+        r = subprocess.Popen([sys.executable, "-c",
+                              runner.replace("%s", marker)],
+                             stdout=subprocess.DEVNULL,
+                             stderr=subprocess.DEVNULL)
+        end = time.time() + 10
+        while len(leftovers(marker)) < 2 and time.time() < end:
+            time.sleep(0.1)
+        started = len(leftovers(marker))
+        r.send_signal(sig)
+        try:
+            r.wait(timeout=15)
+        except subprocess.TimeoutExpired:
+            r.kill()
+        time.sleep(0.5)
+        left = leftovers(marker)
+        check("runner stopped by %s: the running command's processes are "
+              "stopped" % name, started == 2 and not left,
+              "started %d, left: %s" % (started, left))
+        for pid in left:
+            os.kill(pid, signal.SIGKILL)
 
 
 # ------------------------------------------------------------- copies
