@@ -144,7 +144,11 @@ def testTimeout(tmp):
     # The runner interrupted (Ctrl-C, SIGTERM) while a command runs: the
     # command's session is stopped with it, though neither signal reaches
     # that session by itself
+    # (a shell that starts jobs in the background, as a CI may, hands
+    # them SIGINT ignored: the child takes Ctrl-C's default back, as a
+    # runner started from a terminal has it)
     runner = ("import signal, sys; sys.path.insert(0, %r); "
+              "signal.signal(signal.SIGINT, signal.default_int_handler); "
               "import processTools; processTools.stopOnTerminate(); "
               "processTools.run(['bash', '-c', "
               "'sleep %%s & sleep %%s & wait'], %r, 60)" % (here, tmp))
