@@ -24,6 +24,18 @@ Foam::newtonSolver::methodNames
 });
 
 
+const Foam::Enum<Foam::newtonSolver::onsetStop>
+Foam::newtonSolver::onsetStopNames
+({
+    { onsetStop::always, "always" },
+    { onsetStop::afterLineSearch, "afterLineSearch" },
+    { onsetStop::never, "never" },
+    // (the former switch)
+    { onsetStop::always, "yes" },
+    { onsetStop::never, "no" },
+});
+
+
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace Foam
@@ -32,6 +44,10 @@ namespace Foam
 //- [S14b] The smallest fraction of a step kept when it stops at a contact
 //  onset: a face just short of its onset does not stall the solve
 static const scalar minOnsetFraction = 1e-2;
+
+//- [S14b] The fractions of the step to the onset tried after a failed line
+//  search ('afterLineSearch'): 1, 1/2, 1/4 and 1/8 of it
+static const label nOnsetTrials = 4;
 
 static bool readDisplacementTest(const dictionary& dict)
 {
@@ -64,6 +80,23 @@ static newtonSolver::method readMethod(const dictionary& dict)
     return newtonSolver::methodNames[name];
 }
 
+
+static newtonSolver::onsetStop readOnsetStop(const dictionary& dict)
+{
+    const word name
+    (
+        dict.lookupOrDefault<word>("stopAtContactOnset", "afterLineSearch")
+    );
+    if (!newtonSolver::onsetStopNames.found(name))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'stopAtContactOnset' in dictionary " << dict.name()
+            << " is '" << name << "'; expected always, afterLineSearch or"
+            << " never" << nl << exit(FatalIOError);
+    }
+    return newtonSolver::onsetStopNames[name];
+}
+
 } // End namespace Foam
 
 
@@ -93,10 +126,7 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
     (
         dict.lookupOrDefault<bool>("holdContactLinearisation", true)
     ),
-    stopAtContactOnset_
-    (
-        dict.lookupOrDefault<bool>("stopAtContactOnset", true)
-    ),
+    stopAtContactOnset_(readOnsetStop(dict)),
     contactLookAhead_(dict.lookupOrDefault<label>("contactLookAhead", 0)),
     krylovRefresh_(dict.lookupOrDefault<label>("krylovRefresh", 15)),
     augmentInside_
@@ -186,6 +216,26 @@ void Foam::newtonSolver::evaluate
 {
     ++nResidualEvaluations_;
     sys.residual(x, R);
+}
+
+
+Foam::scalar Foam::newtonSolver::contactOnsetFraction
+(
+    nonlinearSystem& sys,
+    const Eigen::VectorXd& x,
+    const Eigen::VectorXd& dx
+) const
+{
+    const scalar onset = sys.firstContactFraction(x, dx);
+    if (onset >= 1)
+    {
+        return 1;
+    }
+    if (verbose_)
+    {
+        Info<< "        contact onset at " << onset << " of the step" << endl;
+    }
+    return max(onset, minOnsetFraction);
 }
 
 
@@ -566,19 +616,17 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
         // [S14b] the step stops where a contact face that is open at x
         // reaches its obstacle: past it the linearisation (no contact
         // stiffness there) does not hold, and the full step would drive
-        // the face through the obstacle
-        if (stopAtContactOnset_)
+        // the face through the obstacle. 'always': before the line search;
+        // 'afterLineSearch' (default): only where no fraction of the step
+        // lowers |R| (faces that the step closes only a little, as the
+        // rings of a widening Hertz contact, then cost no stop each)
+        if (stopAtContactOnset_ == onsetStop::always)
         {
-            const scalar onset = sys.firstContactFraction(x, dx);
+            const scalar onset = contactOnsetFraction(sys, x, dx);
             if (onset < 1)
             {
-                dx *= max(onset, minOnsetFraction);
+                dx *= onset;
                 ++res.contactOnsetStops;
-                if (verbose_)
-                {
-                    Info<< "        contact onset at " << onset
-                        << " of the step" << endl;
-                }
             }
         }
 
@@ -618,6 +666,37 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
                 // (the last fraction tried stays in lambda: it is the one
                 // taken when none decreases |R|)
                 lambda *= 0.5;
+            }
+        }
+        const scalar onset =
+            !decreased && stopAtContactOnset_ == onsetStop::afterLineSearch
+          ? contactOnsetFraction(sys, x, dx)
+          : 1;
+        if (onset < 1)
+        {
+            // [S14b] no fraction of the step lowers |R|: the fractions of
+            // the step to the first contact onset along it are tried
+            const scalar lambdaSmallest = lambda;
+            lambda = onset;
+            for (label ls = 0; ls < nOnsetTrials && !decreased; ++ls)
+            {
+                xTrial = x + lambda*dx;
+                evaluate(sys, xTrial, Rtrial);
+                normTrial = gFinite(Rtrial) ? gNorm(Rtrial) : GREAT;
+                decreased = normTrial <= (1 - 1e-4*lambda)*normR;
+                if (!decreased)
+                {
+                    lambda *= 0.5;
+                }
+            }
+            res.contactOnsetStops += decreased;
+            if (!decreased && lambdaFlat < 0 && !fullStepFallback_)
+            {
+                // none did: the smallest fraction, as without the stop
+                lambda = lambdaSmallest;
+                xTrial = x + lambda*dx;
+                evaluate(sys, xTrial, Rtrial);
+                normTrial = gFinite(Rtrial) ? gNorm(Rtrial) : GREAT;
             }
         }
         if (!decreased && predicted)
