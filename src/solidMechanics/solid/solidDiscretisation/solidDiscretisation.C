@@ -670,29 +670,36 @@ bool Foam::solidDiscretisation::augmentForcePatches()
 }
 
 
+Foam::PtrList<Foam::solidDiscretisation::forceKinematics>
+Foam::solidDiscretisation::forcePatchKinematics(const vectorField& u)
+{
+    const scalar dt = mesh_.time().deltaTValue();
+    setIterate(u);
+    PtrList<forceKinematics> k(mesh_.boundary().size());
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (bcs_.kind(patchi) == solidBoundaries::FORCE)
+        {
+            k.set(patchi, new forceKinematics(*this, patchi, dt));
+        }
+    }
+    return k;
+}
+
+
 Foam::scalar Foam::solidDiscretisation::firstContactFraction
 (
     const vectorField& u0,
     const vectorField& u1
 )
 {
-    const scalar dt = mesh_.time().deltaTValue();
-    PtrList<forceKinematics> k0(mesh_.boundary().size());
-    setIterate(u0);
-    forAll(mesh_.boundary(), patchi)
-    {
-        if (bcs_.kind(patchi) == solidBoundaries::FORCE)
-        {
-            k0.set(patchi, new forceKinematics(*this, patchi, dt));
-        }
-    }
-    setIterate(u1);
+    const PtrList<forceKinematics> k0(forcePatchKinematics(u0));
+    const PtrList<forceKinematics> k1(forcePatchKinematics(u1));
     scalar fraction = 1;
-    forAll(mesh_.boundary(), patchi)
+    forAll(k0, patchi)
     {
         if (k0.set(patchi))
         {
-            const forceKinematics k1(*this, patchi, dt);
             // every patch (no short cut: the call is collective)
             fraction =
                 min
@@ -700,7 +707,7 @@ Foam::scalar Foam::solidDiscretisation::firstContactFraction
                     fraction,
                     bcs_.forcePatch(patchi).firstContactFraction
                     (
-                        k0[patchi].k, k1.k
+                        k0[patchi].k, k1[patchi].k
                     )
                 );
         }
@@ -715,26 +722,20 @@ Foam::label Foam::solidDiscretisation::predictContacts
     const vectorField& u1
 )
 {
-    const scalar dt = mesh_.time().deltaTValue();
-    PtrList<forceKinematics> k1(mesh_.boundary().size());
-    setIterate(u1);
-    forAll(mesh_.boundary(), patchi)
-    {
-        if (bcs_.kind(patchi) == solidBoundaries::FORCE)
-        {
-            k1.set(patchi, new forceKinematics(*this, patchi, dt));
-        }
-    }
-    setIterate(u0);
+    // (u0 last: the iterate the solve goes on from)
+    const PtrList<forceKinematics> k1(forcePatchKinematics(u1));
+    const PtrList<forceKinematics> k0(forcePatchKinematics(u0));
     label nMarked = 0;
-    forAll(mesh_.boundary(), patchi)
+    forAll(k0, patchi)
     {
-        if (k1.set(patchi))
+        if (k0.set(patchi))
         {
-            const forceKinematics k0(*this, patchi, dt);
             // every patch (the call is collective)
             nMarked +=
-                bcs_.forcePatch(patchi).predictContacts(k0.k, k1[patchi].k);
+                bcs_.forcePatch(patchi).predictContacts
+                (
+                    k0[patchi].k, k1[patchi].k
+                );
         }
     }
     return nMarked;

@@ -65,6 +65,17 @@ Foam::labelList Foam::totalLagrangianSolid::solvedComponents
 }
 
 
+Foam::vectorField Foam::totalLagrangianSolid::unpack
+(
+    const Eigen::VectorXd& x
+) const
+{
+    vectorField v(mesh_.nCells());
+    unpack(x, v);
+    return v;
+}
+
+
 void Foam::totalLagrangianSolid::unpack
 (
     const Eigen::VectorXd& x,
@@ -263,8 +274,7 @@ void Foam::totalLagrangianSolid::beginStep
         // contact by the prediction
         if (predictorContact_)
         {
-            vectorField u(mesh_.nCells());
-            unpack(x, u);
+            vectorField u(unpack(x));
             if (discretisation_.correctPrediction(u))
             {
                 pack(u, x);
@@ -282,9 +292,7 @@ bool Foam::totalLagrangianSolid::augmentable() const
 
 bool Foam::totalLagrangianSolid::augment(const Eigen::VectorXd& x)
 {
-    vectorField u(mesh_.nCells());
-    unpack(x, u);
-    discretisation_.setIterate(u);
+    discretisation_.setIterate(unpack(x));
     return discretisation_.augmentForcePatches();
 }
 
@@ -295,11 +303,7 @@ Foam::scalar Foam::totalLagrangianSolid::firstContactFraction
     const Eigen::VectorXd& dx
 )
 {
-    vectorField u0(mesh_.nCells());
-    vectorField u1(mesh_.nCells());
-    unpack(x, u0);
-    unpack(x + dx, u1);
-    return discretisation_.firstContactFraction(u0, u1);
+    return discretisation_.firstContactFraction(unpack(x), unpack(x + dx));
 }
 
 
@@ -309,11 +313,7 @@ Foam::label Foam::totalLagrangianSolid::predictContacts
     const Eigen::VectorXd& dx
 )
 {
-    vectorField u0(mesh_.nCells());
-    vectorField u1(mesh_.nCells());
-    unpack(x, u0);
-    unpack(x + dx, u1);
-    return discretisation_.predictContacts(u0, u1);
+    return discretisation_.predictContacts(unpack(x), unpack(x + dx));
 }
 
 
@@ -325,9 +325,7 @@ void Foam::totalLagrangianSolid::clearPredictedContacts()
 
 void Foam::totalLagrangianSolid::commit(const Eigen::VectorXd& x)
 {
-    vectorField u(mesh_.nCells());
-    unpack(x, u);
-    discretisation_.setIterate(u);
+    discretisation_.setIterate(unpack(x));
     discretisation_.commit(mesh_.time().deltaTValue());
 
     D_.primitiveFieldRef() = discretisation_.D0();
@@ -370,9 +368,7 @@ void Foam::totalLagrangianSolid::residual
     Eigen::VectorXd& R
 )
 {
-    vectorField u(mesh_.nCells());
-    unpack(x, u);
-    discretisation_.setIterate(u);
+    discretisation_.setIterate(unpack(x));
 
     vectorField Rcell(mesh_.nCells());
     discretisation_.residual(Rcell);
@@ -383,8 +379,7 @@ void Foam::totalLagrangianSolid::residual
 bool Foam::totalLagrangianSolid::updateJacobian(const Eigen::VectorXd& x)
 {
     cpuTime timer;
-    vectorField u(mesh_.nCells());
-    unpack(x, u);
+    const vectorField u(unpack(x));
     discretisation_.setIterate(u);
     discretisation_.jacobian(jacobian_);
     if (discretisation_.patternMissed())
