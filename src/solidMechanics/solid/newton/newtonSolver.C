@@ -128,6 +128,7 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
     ),
     stopAtContactOnset_(readOnsetStop(dict)),
     contactLookAhead_(dict.lookupOrDefault<label>("contactLookAhead", 0)),
+    lineSearchMemory_(dict.lookupOrDefault<label>("lineSearchMemory", 1)),
     krylovRefresh_(dict.lookupOrDefault<label>("krylovRefresh", 15)),
     augmentInside_
     (
@@ -163,6 +164,14 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
             << " (got " << forceTol_ << "), displacementTolerance > 0 (got "
             << displacementTol_ << ") and maxNewtonIterations >= 1 (got "
             << maxNewton_ << ")" << nl << exit(FatalIOError);
+    }
+    if (lineSearchMemory_ < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'lineSearchMemory' in dictionary " << dict.name()
+            << " is " << lineSearchMemory_ << "; expected an integer >= 1"
+            << " (1: |R| must fall at every iteration)" << nl
+            << exit(FatalIOError);
     }
     if (!(initialForcing_ > 0) || initialForcing_ >= 1)
     {
@@ -428,6 +437,10 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
     // one (which the non-monotone line search may have made worse)
     Eigen::VectorXd xBest(x);
     scalar normBest = normR;
+    // [S14d] the last lineSearchMemory residual norms: the line search's
+    // reference is the largest of them
+    DynamicList<scalar> recentNorms(lineSearchMemory_);
+    recentNorms.append(normR);
     label itBest = 0;
     scalar eta = 1e-2;
     label lastKrylov = -1;
@@ -496,6 +509,8 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
                 evaluate(sys, x, R);
                 normR = gFinite(R) ? gNorm(R) : GREAT;
                 normRprev = normR;
+                recentNorms.clear();
+                recentNorms.append(normR);
                 xBest = x;
                 normBest = normR;
                 itBest = it;
@@ -636,6 +651,11 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
         // largest fraction that does not raise |R| is taken (a free body
         // moving towards its support), else the smallest one, or the full
         // step with fullStepFallback
+        scalar normRef = 0;
+        forAll(recentNorms, k)
+        {
+            normRef = max(normRef, recentNorms[k]);
+        }
         scalar lambda = 1;
         scalar normTrial = GREAT;
         bool decreased = false;
@@ -652,7 +672,7 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
                 Rfull = Rtrial;
                 normFull = normTrial;
             }
-            if (normTrial <= (1 - 1e-4*lambda)*normR)
+            if (normTrial <= (1 - 1e-4*lambda)*normRef)
             {
                 decreased = true;
                 break;
@@ -683,7 +703,7 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
                 xTrial = x + lambda*dx;
                 evaluate(sys, xTrial, Rtrial);
                 normTrial = gFinite(Rtrial) ? gNorm(Rtrial) : GREAT;
-                decreased = normTrial <= (1 - 1e-4*lambda)*normR;
+                decreased = normTrial <= (1 - 1e-4*lambda)*normRef;
                 if (!decreased)
                 {
                     lambda *= 0.5;
@@ -716,6 +736,8 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
             evaluate(sys, x, R);
             normRprev = normR;
             normR = gFinite(R) ? gNorm(R) : GREAT;
+            recentNorms.clear();
+            recentNorms.append(normR);
             xBest = x;
             normBest = normR;
             itBest = it + 1;
@@ -766,6 +788,16 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
         R = Rtrial;
         normRprev = normR;
         normR = normTrial;
+        if (recentNorms.size() == lineSearchMemory_)
+        {
+            // (the oldest out)
+            for (label k = 1; k < recentNorms.size(); ++k)
+            {
+                recentNorms[k - 1] = recentNorms[k];
+            }
+            recentNorms.remove();
+        }
+        recentNorms.append(normR);
         if (normR < normBest)
         {
             if (normR < 0.9*normBest)
