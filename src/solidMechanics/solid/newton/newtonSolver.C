@@ -13,6 +13,8 @@ License
 #include "newtonSolver.H"
 #include "IOstreams.H"
 #include "cpuTime.H"
+#include "OStringStream.H"
+#include "ListOps.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -225,6 +227,32 @@ void Foam::newtonSolver::evaluate
 {
     ++nResidualEvaluations_;
     sys.residual(x, R);
+}
+
+
+Foam::string Foam::newtonSolver::largestResidual
+(
+    const nonlinearSystem& sys,
+    const Eigen::VectorXd& R
+) const
+{
+    // (collective: every processor's largest entry to the master)
+    Eigen::Index imax = -1;
+    const scalar local = R.size() ? R.cwiseAbs().maxCoeff(&imax) : -1;
+    List<scalar> values(Pstream::nProcs(), scalar(-1));
+    List<string> places(Pstream::nProcs());
+    values[Pstream::myProcNo()] = local;
+    places[Pstream::myProcNo()] = imax >= 0 ? sys.describeUnknown(imax) : "";
+    Pstream::gatherList(values);
+    Pstream::gatherList(places);
+    const label proci = findMax(values);
+    OStringStream os;
+    os  << values[proci] << " N at " << places[proci].c_str();
+    if (Pstream::parRun())
+    {
+        os  << " on processor " << proci;
+    }
+    return os.str();
 }
 
 
@@ -494,6 +522,8 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
             Info<< "    Newton " << it << ": force residual "
                 << res.forceResidual << ", displacement correction "
                 << res.displacementResidual << endl;
+            Info<< "        largest residual "
+                << largestResidual(sys, R).c_str() << endl;
         }
 
         // [C5b] inexact Uzawa: near the solution the multipliers are

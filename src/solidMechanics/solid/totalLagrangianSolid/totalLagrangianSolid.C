@@ -11,6 +11,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "totalLagrangianSolid.H"
+#include "OStringStream.H"
+#include "HashSet.H"
 #include "calculatedFvPatchFields.H"
 #include "cpuTime.H"
 #include "solidRestartState.H"
@@ -294,6 +296,34 @@ bool Foam::totalLagrangianSolid::augment(const Eigen::VectorXd& x)
 {
     discretisation_.setIterate(unpack(x));
     return discretisation_.augmentForcePatches();
+}
+
+
+Foam::string Foam::totalLagrangianSolid::describeUnknown(const label i) const
+{
+    const label nc = comps_.size();
+    const label celli = i/nc;
+    const char* xyz = "xyz";
+    OStringStream os;
+    os  << "cell " << celli << " at " << mesh_.C()[celli]
+        << ", component " << xyz[comps_[i % nc]];
+    wordHashSet patches;
+    for (const label facei : mesh_.cells()[celli])
+    {
+        if (!mesh_.isInternalFace(facei))
+        {
+            patches.insert
+            (
+                mesh_.boundaryMesh()[mesh_.boundaryMesh().whichPatch(facei)]
+               .name()
+            );
+        }
+    }
+    if (patches.size())
+    {
+        os  << ", next to " << flatOutput(patches.sortedToc());
+    }
+    return os.str();
 }
 
 
