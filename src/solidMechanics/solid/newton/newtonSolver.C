@@ -51,6 +51,13 @@ static const scalar minOnsetFraction = 1e-2;
 //  search ('afterLineSearch'): 1, 1/2, 1/4 and 1/8 of it
 static const label nOnsetTrials = 4;
 
+//- |R|, or GREAT where R is not finite (a trial the line search rejects)
+static scalar finiteNorm(const Eigen::VectorXd& R)
+{
+    return gFinite(R) ? gNorm(R) : GREAT;
+}
+
+
 static bool readDisplacementTest(const dictionary& dict)
 {
     const word name
@@ -465,10 +472,10 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
     // one (which the non-monotone line search may have made worse)
     Eigen::VectorXd xBest(x);
     scalar normBest = normR;
-    // [S14d] the last lineSearchMemory residual norms: the line search's
-    // reference is the largest of them
-    DynamicList<scalar> recentNorms(lineSearchMemory_);
-    recentNorms.append(normR);
+    // [S14d] the residual norms since the start or the last reset (a
+    // multiplier update, a restart): the line search's reference is the
+    // largest of the last lineSearchMemory of them
+    DynamicList<scalar> recentNorms(1, normR);
     label itBest = 0;
     scalar eta = 1e-2;
     label lastKrylov = -1;
@@ -537,7 +544,7 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
             {
                 ++res.augmentations;
                 evaluate(sys, x, R);
-                normR = gFinite(R) ? gNorm(R) : GREAT;
+                normR = finiteNorm(R);
                 normRprev = normR;
                 recentNorms.clear();
                 recentNorms.append(normR);
@@ -682,10 +689,26 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
         // moving towards its support), else the smallest one, or the full
         // step with fullStepFallback
         scalar normRef = 0;
-        forAll(recentNorms, k)
+        for
+        (
+            label k = max(recentNorms.size() - lineSearchMemory_, 0);
+            k < recentNorms.size();
+            ++k
+        )
         {
             normRef = max(normRef, recentNorms[k]);
         }
+        // |R| at x + l dx (xTrial, Rtrial hold it), and Armijo's test
+        const auto tryStep = [&](const scalar l)
+        {
+            xTrial = x + l*dx;
+            evaluate(sys, xTrial, Rtrial);
+            return finiteNorm(Rtrial);
+        };
+        const auto sufficient = [&](const scalar norm, const scalar l)
+        {
+            return norm <= (1 - 1e-4*l)*normRef;
+        };
         scalar lambda = 1;
         scalar normTrial = GREAT;
         bool decreased = false;
@@ -693,16 +716,14 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
         const label nTrials = 6;    // fractions 1, 1/2, ..., 1/32
         for (label ls = 0; ls < nTrials; ++ls)
         {
-            xTrial = x + lambda*dx;
-            evaluate(sys, xTrial, Rtrial);
-            normTrial = gFinite(Rtrial) ? gNorm(Rtrial) : GREAT;
+            normTrial = tryStep(lambda);
             if (ls == 0)
             {
                 xFull = xTrial;
                 Rfull = Rtrial;
                 normFull = normTrial;
             }
-            if (normTrial <= (1 - 1e-4*lambda)*normRef)
+            if (sufficient(normTrial, lambda))
             {
                 decreased = true;
                 break;
@@ -730,10 +751,8 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
             lambda = onset;
             for (label ls = 0; ls < nOnsetTrials && !decreased; ++ls)
             {
-                xTrial = x + lambda*dx;
-                evaluate(sys, xTrial, Rtrial);
-                normTrial = gFinite(Rtrial) ? gNorm(Rtrial) : GREAT;
-                decreased = normTrial <= (1 - 1e-4*lambda)*normRef;
+                normTrial = tryStep(lambda);
+                decreased = sufficient(normTrial, lambda);
                 if (!decreased)
                 {
                     lambda *= 0.5;
@@ -744,9 +763,7 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
             {
                 // none did: the smallest fraction, as without the stop
                 lambda = lambdaSmallest;
-                xTrial = x + lambda*dx;
-                evaluate(sys, xTrial, Rtrial);
-                normTrial = gFinite(Rtrial) ? gNorm(Rtrial) : GREAT;
+                normTrial = tryStep(lambda);
             }
         }
         if (!decreased && predicted)
@@ -765,7 +782,7 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
             x = xStart;
             evaluate(sys, x, R);
             normRprev = normR;
-            normR = gFinite(R) ? gNorm(R) : GREAT;
+            normR = finiteNorm(R);
             recentNorms.clear();
             recentNorms.append(normR);
             xBest = x;
@@ -792,9 +809,7 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
         else if (!decreased && lambdaFlat > 0)
         {
             lambda = lambdaFlat;
-            xTrial = x + lambda*dx;
-            evaluate(sys, xTrial, Rtrial);
-            normTrial = gFinite(Rtrial) ? gNorm(Rtrial) : GREAT;
+            normTrial = tryStep(lambda);
         }
         if (normTrial >= GREAT)
         {
@@ -818,15 +833,6 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
         R = Rtrial;
         normRprev = normR;
         normR = normTrial;
-        if (recentNorms.size() == lineSearchMemory_)
-        {
-            // (the oldest out)
-            for (label k = 1; k < recentNorms.size(); ++k)
-            {
-                recentNorms[k - 1] = recentNorms[k];
-            }
-            recentNorms.remove();
-        }
         recentNorms.append(normR);
         if (normR < normBest)
         {
