@@ -380,20 +380,36 @@ void Foam::contactFaces::readContactFaces(const dictionary& dict)
             << exit(FatalIOError);
     }
 
-    // [C2b] width of the smoothed onset of contact: 1e-3 of a cell depth
+    // [C2b] width of the smoothed onset of contact: 'contactSmoothing' in
+    // metres, or 'contactSmoothingCells' in cell depths (default 1e-3); a
+    // written time directory holds the width in metres
     const fvPatch& p = contactPatch();
-    contactSmoothing_ =
-        dict.lookupOrDefault<scalar>
-        (
-            "contactSmoothing", 1e-3*contactSurface::maxCellDepth(p)
-        );
-    if (contactSmoothing_ < 0)
+    if (dict.found("contactSmoothing") && dict.found("contactSmoothingCells"))
     {
         FatalIOErrorInFunction(dict)
-            << "Keyword 'contactSmoothing' in dictionary " << dict.name()
-            << " must be >= 0, got " << contactSmoothing_ << nl
+            << "Keywords 'contactSmoothing' (metres) and"
+            << " 'contactSmoothingCells' (cell depths) in dictionary "
+            << dict.name() << " both given; expected one of them" << nl
             << exit(FatalIOError);
     }
+    const word key
+    (
+        dict.found("contactSmoothing")
+      ? "contactSmoothing"
+      : "contactSmoothingCells"
+    );
+    const scalar width = dict.lookupOrDefault<scalar>(key, 1e-3);
+    if (!(width >= 0) || !std::isfinite(width))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword '" << key << "' in dictionary " << dict.name()
+            << " must be a finite number >= 0, got " << width << nl
+            << exit(FatalIOError);
+    }
+    contactSmoothing_ =
+        key == "contactSmoothing"
+      ? width
+      : width*contactSurface::maxCellDepth(p);
 
     // The law needs the solid's moduli for automatic penalties; utilities
     // such as decomposePar read D without them and only copy the entries,
@@ -425,7 +441,8 @@ Foam::wordList Foam::contactFaces::contactFacesKeywords() const
     wordList w
     ({
         "frictionLaw", "penaltyScale", "tangentialPenaltyScale",
-        "contactSmoothing", "augmentedLagrangian", "dissipatedEnergy",
+        "contactSmoothing", "contactSmoothingCells", "augmentedLagrangian",
+        "dissipatedEnergy",
         "normalMultiplier"
     });
     w.append(layout_.keywords());
