@@ -49,6 +49,82 @@ Description
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
+namespace Foam
+{
+
+//- [S14e] The continuation retry of a step whose exact-Jacobian Newton
+//  failed: the step solved from the predictor again with every contact
+//  onset widened by the factor onsetContinuation, then from there with
+//  the onsets as given (the answer is the given system's). Returns the
+//  failed attempt's result where there is no contact, the factor is 1 or
+//  the run's last maxContinuationFailures continuations failed (they are
+//  then off for the run: a case whose failures have another cause does
+//  not pay for them at every step), else the last solve's; adds the
+//  Newton iterations to nNewton
+static const label maxContinuationFailures = 3;
+
+newtonSolver::result continueWithWiderOnset
+(
+    totalLagrangianSolid& solid,
+    newtonSolver& nonlinearSolver,
+    Eigen::VectorXd& x,
+    Eigen::VectorXd& xStart,
+    const bool predict,
+    const newtonSolver::result& failed,
+    label& nNewton,
+    label& nFailuresInARow
+)
+{
+    const scalar factor = nonlinearSolver.onsetContinuation();
+    if
+    (
+        factor <= 1
+     || nFailuresInARow >= maxContinuationFailures
+     || !solid.widenContactOnset(factor)
+    )
+    {
+        return failed;
+    }
+    Info<< "    continuing the step with the contact onset " << factor
+        << " times wider, then as given: the exact-Jacobian Newton stopped ("
+        << failed.reason.c_str() << ") after " << failed.newtonIterations
+        << " iterations, force residual " << failed.forceResidual << ", "
+        << failed.contactOnsetStops << " steps stopped at a contact onset"
+        << endl;
+
+    solid.beginStep(x, xStart, predict);
+    const newtonSolver::result wide =
+        nonlinearSolver.solve(solid, x, xStart, false);
+    solid.widenContactOnset(1);
+    nNewton += wide.newtonIterations;
+    newtonSolver::result given = wide;
+    if (wide.converged)
+    {
+        given = nonlinearSolver.solve(solid, x, xStart, false);
+        nNewton += given.newtonIterations;
+        given.krylovIterations += wide.krylovIterations;
+        given.residualEvaluations += wide.residualEvaluations;
+    }
+    Info<< "    continuation: " << wide.newtonIterations
+        << (wide.converged ? "" : " (not converged)") << " + "
+        << (wide.converged ? given.newtonIterations : 0)
+        << " Newton iterations"
+        << (given.converged ? "" : ", not converged") << endl;
+
+    nFailuresInARow = given.converged ? 0 : nFailuresInARow + 1;
+    if (nFailuresInARow == maxContinuationFailures)
+    {
+        Info<< "    continuation retries off for the rest of the run: the"
+            << " last " << maxContinuationFailures << " failed" << endl;
+    }
+    return given;
+}
+
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
 int main(int argc, char *argv[])
 {
     argList::addNote
@@ -78,6 +154,9 @@ int main(int argc, char *argv[])
     label nSteps = 0;
     label nNewtonTotal = 0;
     label nAccepted = 0;
+    // [S14e] continuations failed in a row (off at 3), carried by a restart
+    label nContinuationFailures =
+        restartState.lookupOrDefault<label>("continuationFailures", 0);
 
     autoPtr<OFstream> perfFile;
     if (Pstream::master())
@@ -110,6 +189,7 @@ int main(int argc, char *argv[])
         output.update();
         restartState.set("time", runTime.value());
         restartState.set("timeStepController", controller.state());
+        restartState.set("continuationFailures", nContinuationFailures);
         restartState.set("solid", solid.state());
         writer.write(restartState);
     };
@@ -149,6 +229,14 @@ int main(int argc, char *argv[])
             solid.beginStep(x, xStart, controller.predict());
             res = nonlinearSolver.solve(solid, x, xStart, retry);
             nNewton += res.newtonIterations;
+            if (!res.converged && !retry)
+            {
+                res = continueWithWiderOnset
+                (
+                    solid, nonlinearSolver, x, xStart, controller.predict(),
+                    res, nNewton, nContinuationFailures
+                );
+            }
 
             // [C5b] augmented Lagrangian contact: the Newton solver
             // updates the multipliers between its iterations and returns

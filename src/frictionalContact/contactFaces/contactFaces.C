@@ -465,6 +465,7 @@ void Foam::contactFaces::copyContactFaces(const contactFaces& ptf)
     penaltyScale_ = ptf.penaltyScale_;
     tangentialPenaltyScale_ = ptf.tangentialPenaltyScale_;
     contactSmoothing_ = ptf.contactSmoothing_;
+    onsetWidening_ = ptf.onsetWidening_;
     layout_ = ptf.layout_;
     state_ = ptf.state_;
     contactPressure_ = ptf.contactPressure_;
@@ -551,6 +552,7 @@ Foam::contactFaces::contactFaces()
     penaltyScale_(100),
     tangentialPenaltyScale_(0.1),
     contactSmoothing_(0),
+    onsetWidening_(1),
     normalForce_(Zero),
     frictionForce_(Zero),
     totalDissipation_(0),

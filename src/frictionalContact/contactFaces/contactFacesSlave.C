@@ -66,7 +66,7 @@ void Foam::contactFaces::evaluateSlaveFace
     // [S14c] a face predicted to close: the penalty's line through its
     // gap (a pull while open), no friction
     const scalar pen = augmentedPenetration(i, sf.gap);
-    if (predictedClosed(i) && pen < contactSmoothing_)
+    if (predictedClosed(i) && pen < onsetWidth())
     {
         sf.result.tN = law().KN()*pen;
         sf.result.tT = Zero;
@@ -122,7 +122,7 @@ void Foam::contactFaces::slaveFaceTangent
 
     // [S14c] a face predicted to close: the penalty's line through its
     // gap, no friction (evaluateSlaveFace)
-    const bool lineOnly = predictedClosed(i) && pen < contactSmoothing_;
+    const bool lineOnly = predictedClosed(i) && pen < onsetWidth();
     if (lineOnly)
     {
         res.tN = law().KN()*pen;
@@ -210,7 +210,7 @@ Foam::scalar Foam::contactFaces::contactOnsetFraction
 ) const
 {
     // [S14b] linear in the fraction between the two ends
-    const scalar e = contactSmoothing_;
+    const scalar e = onsetWidth();
     scalar fraction = 1;
     forAll(p0, i)
     {
@@ -230,7 +230,7 @@ Foam::label Foam::contactFaces::markPredictedClosed
 )
 {
     // [S14c] the faces [S14b] would stop at
-    const scalar e = contactSmoothing_;
+    const scalar e = onsetWidth();
     if (predictedClosed_.size() != p0.size())
     {
         predictedClosed_.setSize(p0.size());

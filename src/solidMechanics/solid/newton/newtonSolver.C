@@ -137,6 +137,10 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
     ),
     stopAtContactOnset_(readOnsetStop(dict)),
     contactLookAhead_(dict.lookupOrDefault<label>("contactLookAhead", 0)),
+    onsetContinuation_
+    (
+        dict.lookupOrDefault<scalar>("onsetContinuation", 10)
+    ),
     lineSearchMemory_(dict.lookupOrDefault<label>("lineSearchMemory", 1)),
     krylovRefresh_(dict.lookupOrDefault<label>("krylovRefresh", 15)),
     augmentInside_
@@ -203,6 +207,13 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
             << " is " << augmentForceFactor_ << "; expected a value >= 1"
             << " (the multipliers are updated once |R|/|F| is below it"
             << " times forceTolerance)" << nl << exit(FatalIOError);
+    }
+    if (!(onsetContinuation_ >= 1) || !std::isfinite(onsetContinuation_))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'onsetContinuation' in dictionary " << dict.name()
+            << " is " << onsetContinuation_ << "; expected a factor >= 1"
+            << " (1: off)" << nl << exit(FatalIOError);
     }
     if (contactLookAhead_ < 0)
     {

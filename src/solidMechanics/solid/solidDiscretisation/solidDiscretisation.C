@@ -754,6 +754,27 @@ void Foam::solidDiscretisation::clearPredictedContacts()
 }
 
 
+Foam::label Foam::solidDiscretisation::widenContactOnset
+(
+    const scalar factor
+)
+{
+    label nPatches = 0;
+    forAll(mesh_.boundary(), patchi)
+    {
+        if
+        (
+            bcs_.kind(patchi) == solidBoundaries::FORCE
+         && bcs_.forcePatch(patchi).widenContactOnset(factor)
+        )
+        {
+            ++nPatches;
+        }
+    }
+    return nPatches;
+}
+
+
 void Foam::solidDiscretisation::resetAugmentation()
 {
     forAll(mesh_.boundary(), patchi)

@@ -353,6 +353,15 @@ void Foam::totalLagrangianSolid::clearPredictedContacts()
 }
 
 
+Foam::label Foam::totalLagrangianSolid::widenContactOnset
+(
+    const scalar factor
+)
+{
+    return discretisation_.widenContactOnset(factor);
+}
+
+
 void Foam::totalLagrangianSolid::commit(const Eigen::VectorXd& x)
 {
     discretisation_.setIterate(unpack(x));
