@@ -567,7 +567,13 @@ Foam::contactFaces::contactFaces()
     nAugmentations_(0),
     shearYieldTimeIndex_(-1),
     linearised_(false)
-{}
+{
+    onsetFace_ = -1;
+    onsetFaceFraction_ = 1;
+    onsetP0_ = 0;
+    onsetP1_ = 0;
+    onsetClosing_ = 0;
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

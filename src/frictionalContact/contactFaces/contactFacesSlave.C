@@ -212,14 +212,47 @@ Foam::scalar Foam::contactFaces::contactOnsetFraction
     // [S14b] linear in the fraction between the two ends
     const scalar e = onsetWidth();
     scalar fraction = 1;
+    onsetFace_ = -1;
+    onsetClosing_ = 0;
     forAll(p0, i)
     {
         if (p0[i] < -e && p1[i] > e)
         {
-            fraction = min(fraction, -p0[i]/(p1[i] - p0[i]));
+            ++onsetClosing_;
+            const scalar f = -p0[i]/(p1[i] - p0[i]);
+            if (f < fraction)
+            {
+                fraction = f;
+                onsetFace_ = i;
+                onsetP0_ = p0[i];
+                onsetP1_ = p1[i];
+            }
         }
     }
+    onsetFaceFraction_ = fraction;
     return returnReduce(fraction, minOp<scalar>());
+}
+
+
+bool Foam::contactFaces::lastContactOnset
+(
+    scalar& fraction,
+    string& where
+) const
+{
+    if (onsetFace_ < 0)
+    {
+        return false;
+    }
+    fraction = onsetFaceFraction_;
+    OStringStream os;
+    os  << "face " << onsetFace_ << " of " << contactPatch().name()
+        << " at " << contactPatch().Cf()[onsetFace_] << ", penetration "
+        << onsetP0_ << " -> " << onsetP1_ << " m (onset width "
+        << onsetWidth() << " m), " << onsetClosing_
+        << " faces of the patch closing";
+    where = os.str();
+    return true;
 }
 
 

@@ -288,7 +288,13 @@ Foam::scalar Foam::newtonSolver::contactOnsetFraction
     }
     if (verbose_)
     {
-        Info<< "        contact onset at " << onset << " of the step" << endl;
+        const string where(sys.describeContactOnset());
+        Info<< "        contact onset at " << onset << " of the step";
+        if (!where.empty())
+        {
+            Info<< ": " << where.c_str();
+        }
+        Info<< endl;
     }
     return max(onset, minOnsetFraction);
 }

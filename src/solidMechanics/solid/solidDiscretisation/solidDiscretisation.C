@@ -754,6 +754,47 @@ void Foam::solidDiscretisation::clearPredictedContacts()
 }
 
 
+Foam::string Foam::solidDiscretisation::describeContactOnset() const
+{
+    // this processor's first onset, then the earliest over the processors
+    scalar fraction = GREAT;
+    string where;
+    forAll(mesh_.boundary(), patchi)
+    {
+        scalar f;
+        string w;
+        if
+        (
+            bcs_.kind(patchi) == solidBoundaries::FORCE
+         && bcs_.forcePatch(patchi).lastContactOnset(f, w)
+         && f < fraction
+        )
+        {
+            fraction = f;
+            where = w;
+        }
+    }
+    List<scalar> fractions(Pstream::nProcs(), GREAT);
+    List<string> places(Pstream::nProcs());
+    fractions[Pstream::myProcNo()] = fraction;
+    places[Pstream::myProcNo()] = where;
+    Pstream::gatherList(fractions);
+    Pstream::gatherList(places);
+    const label proci = findMin(fractions);
+    if (!Pstream::master() || fractions[proci] >= GREAT)
+    {
+        return "";
+    }
+    OStringStream os;
+    os  << places[proci].c_str();
+    if (Pstream::parRun())
+    {
+        os  << " on processor " << proci;
+    }
+    return os.str();
+}
+
+
 Foam::label Foam::solidDiscretisation::widenContactOnset
 (
     const scalar factor

@@ -353,6 +353,12 @@ void Foam::totalLagrangianSolid::clearPredictedContacts()
 }
 
 
+Foam::string Foam::totalLagrangianSolid::describeContactOnset() const
+{
+    return discretisation_.describeContactOnset();
+}
+
+
 Foam::label Foam::totalLagrangianSolid::widenContactOnset
 (
     const scalar factor
