@@ -56,11 +56,14 @@ namespace Foam
 //  failed: the step solved from the predictor again with every contact
 //  onset widened by the factor onsetContinuation, then from there with
 //  the onsets as given (the answer is the given system's). Returns the
-//  failed attempt's result where there is no contact, the factor is 1 or
-//  the run's last maxContinuationFailures continuations failed (they are
-//  then off for the run: a case whose failures have another cause does
-//  not pay for them at every step), else the last solve's; adds the
-//  Newton iterations to nNewton
+//  failed attempt's result where there is no onset to widen, the factor
+//  is 1 or the run's last maxContinuationFailures continuations failed
+//  (they are then off for the run: a case whose failures have another
+//  cause does not pay for them at every step); else the given system's
+//  solve where the continuation took the step, and the failed attempt's
+//  result where it did not. The Newton iterations of every solve are
+//  added to nNewton, the Krylov iterations and residual evaluations of
+//  every solve to the result
 static const label maxContinuationFailures = 3;
 
 newtonSolver::result continueWithWiderOnset
@@ -76,12 +79,14 @@ newtonSolver::result continueWithWiderOnset
 )
 {
     const scalar factor = nonlinearSolver.onsetContinuation();
-    if
-    (
-        factor <= 1
-     || nFailuresInARow >= maxContinuationFailures
-     || !solid.widenContactOnset(factor)
-    )
+    if (factor <= 1 || nFailuresInARow >= maxContinuationFailures)
+    {
+        return failed;
+    }
+
+    // the predictor with the onsets as given, then the wider ones
+    solid.beginStep(x, xStart, predict);
+    if (!solid.widenContactOnset(factor))
     {
         return failed;
     }
@@ -92,23 +97,20 @@ newtonSolver::result continueWithWiderOnset
         << failed.contactOnsetStops << " steps stopped at a contact onset"
         << endl;
 
-    solid.beginStep(x, xStart, predict);
     const newtonSolver::result wide =
         nonlinearSolver.solve(solid, x, xStart, false);
     solid.widenContactOnset(1);
     nNewton += wide.newtonIterations;
-    newtonSolver::result given = wide;
+
+    newtonSolver::result given;
     if (wide.converged)
     {
         given = nonlinearSolver.solve(solid, x, xStart, false);
         nNewton += given.newtonIterations;
-        given.krylovIterations += wide.krylovIterations;
-        given.residualEvaluations += wide.residualEvaluations;
     }
     Info<< "    continuation: " << wide.newtonIterations
         << (wide.converged ? "" : " (not converged)") << " + "
-        << (wide.converged ? given.newtonIterations : 0)
-        << " Newton iterations"
+        << given.newtonIterations << " Newton iterations"
         << (given.converged ? "" : ", not converged") << endl;
 
     nFailuresInARow = given.converged ? 0 : nFailuresInARow + 1;
@@ -117,7 +119,17 @@ newtonSolver::result continueWithWiderOnset
         Info<< "    continuation retries off for the rest of the run: the"
             << " last " << maxContinuationFailures << " failed" << endl;
     }
-    return given;
+
+    // the failed attempt's diagnostics where the continuation did not
+    // take the step (the retry that follows reports them)
+    newtonSolver::result res = given.converged ? given : failed;
+    res.krylovIterations =
+        failed.krylovIterations + wide.krylovIterations
+      + given.krylovIterations;
+    res.residualEvaluations =
+        failed.residualEvaluations + wide.residualEvaluations
+      + given.residualEvaluations;
+    return res;
 }
 
 } // End namespace Foam

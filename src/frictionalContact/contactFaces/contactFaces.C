@@ -465,7 +465,8 @@ void Foam::contactFaces::copyContactFaces(const contactFaces& ptf)
     penaltyScale_ = ptf.penaltyScale_;
     tangentialPenaltyScale_ = ptf.tangentialPenaltyScale_;
     contactSmoothing_ = ptf.contactSmoothing_;
-    onsetWidening_ = ptf.onsetWidening_;
+    // (a retry's widening is not part of the condition)
+    onsetWidening_ = 1;
     layout_ = ptf.layout_;
     state_ = ptf.state_;
     contactPressure_ = ptf.contactPressure_;
@@ -629,6 +630,17 @@ void Foam::contactFaces::faceUpdate
     {
         law().update(state_[i], in, res);
     }
+}
+
+
+bool Foam::contactFaces::setOnsetWidening(const scalar factor)
+{
+    if (factor != onsetWidening_)
+    {
+        onsetWidening_ = factor;
+        resetMultipliers();
+    }
+    return contactSmoothing_ > 0;
 }
 
 

@@ -230,6 +230,7 @@ Foam::scalar Foam::contactFaces::contactOnsetFraction
         }
     }
     onsetFaceFraction_ = fraction;
+    reduce(onsetClosing_, sumOp<label>());
     return returnReduce(fraction, minOp<scalar>());
 }
 
