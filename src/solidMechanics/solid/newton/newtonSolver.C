@@ -14,7 +14,7 @@ License
 #include "IOstreams.H"
 #include "cpuTime.H"
 #include "OStringStream.H"
-#include "ListOps.H"
+#include "processorPlace.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -256,20 +256,11 @@ Foam::string Foam::newtonSolver::largestResidual
 {
     // (collective: every processor's largest entry to the master)
     Eigen::Index imax = -1;
-    const scalar local = R.size() ? R.cwiseAbs().maxCoeff(&imax) : -1;
-    List<scalar> values(Pstream::nProcs(), scalar(-1));
-    List<string> places(Pstream::nProcs());
-    values[Pstream::myProcNo()] = local;
-    places[Pstream::myProcNo()] = imax >= 0 ? sys.describeUnknown(imax) : "";
-    Pstream::gatherList(values);
-    Pstream::gatherList(places);
-    const label proci = findMax(values);
+    scalar value = R.size() ? R.cwiseAbs().maxCoeff(&imax) : -1;
+    string place(imax >= 0 ? sys.describeUnknown(imax) : "");
+    const label proci = gatherProcessorPlace(value, place, true);
     OStringStream os;
-    os  << values[proci] << " N at " << places[proci].c_str();
-    if (Pstream::parRun())
-    {
-        os  << " on processor " << proci;
-    }
+    os  << value << " N at " << place.c_str() << onProcessor(proci).c_str();
     return os.str();
 }
 

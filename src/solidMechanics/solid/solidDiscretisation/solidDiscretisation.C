@@ -15,6 +15,7 @@ License
 #include "calculatedFvPatchFields.H"
 #include "ListListOps.H"
 #include "solidRestartState.H"
+#include "processorPlace.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -774,24 +775,12 @@ Foam::string Foam::solidDiscretisation::describeContactOnset() const
             where = w;
         }
     }
-    List<scalar> fractions(Pstream::nProcs(), GREAT);
-    List<string> places(Pstream::nProcs());
-    fractions[Pstream::myProcNo()] = fraction;
-    places[Pstream::myProcNo()] = where;
-    Pstream::gatherList(fractions);
-    Pstream::gatherList(places);
-    const label proci = findMin(fractions);
-    if (!Pstream::master() || fractions[proci] >= GREAT)
+    const label proci = gatherProcessorPlace(fraction, where, false);
+    if (proci < 0 || fraction >= GREAT)
     {
         return "";
     }
-    OStringStream os;
-    os  << places[proci].c_str();
-    if (Pstream::parRun())
-    {
-        os  << " on processor " << proci;
-    }
-    return os.str();
+    return where + onProcessor(proci);
 }
 
 
