@@ -46,7 +46,8 @@ void Foam::linearSolvers::petscSolver::readKeywords()
     static const wordHashSet keywords
     {
         "type", "ksp", "preconditioner", "maxIterations", "view", "prefix",
-        "options", "directCellLimit", "nestedDissectionCells", "nearNullSpace",
+        "options", "directCellLimit", "nestedDissectionCells", "krylovCells",
+        "nearNullSpace",
         "shiftZeroPivots",
         "reusePreconditioner", "refreshIterations"
     };

@@ -41,6 +41,11 @@ Description
         a preconditioner on a matrix with a decoupled cell and b on that
         cell: DIVERGED_BREAKDOWN reported (not converged, the reason, the
         true relative residual 1).
+      - a 'fallback' (fallback()): GMRES stopped at 3 iterations, eigenLU
+        behind it: the failed system solved to round-off, its iterations
+        counted, the rest of the step by eigenLU alone, the next step by
+        GMRES first; a fallback without a type or with an unknown keyword
+        is a FatalIOError.
 
     With -report <file> (argList; serial, or -parallel under mpirun): the
     3-D (or -dimension 2) operator of -cells n per direction solved with
@@ -688,6 +693,97 @@ void errors()
 }
 
 
+//- A solver with a 'fallback' behind it [S16d]: GMRES without a
+//  preconditioner stopped at 3 iterations fails on the 2-D operator; the
+//  system is solved by eigenLU to round-off, its Krylov iterations
+//  counted; the rest of the load step goes to eigenLU alone; the next
+//  step (forgetHistory) starts with GMRES again. A fallback without a
+//  type, or with an unknown keyword: FatalIOError
+void fallback()
+{
+    autoPtr<blockSparseMatrix> M =
+        eo::build(eo::grid{24, 24, 1, 0.01}, 2e11, 0.3);
+    const Eigen::VectorXd b = eo::rightHandSide(M());
+    const Eigen::VectorXd xStar = eo::exactSolution(M());
+
+    solverDict d
+    (
+        "type petsc; preconditioner none; maxIterations 3;"
+        "fallback { type eigenLU; }"
+    );
+    autoPtr<linearSolver> s = linearSolver::New(d(), M());
+    Info<< "    " << s->description().c_str() << endl;
+    unitTest::checkTrue
+    (
+        "fallback: the description names both",
+        s->description().find("Krylov") != std::string::npos
+     || s->description().find("GMRES") != std::string::npos
+    );
+    unitTest::checkTrue
+    (
+        "fallback: the description names eigenLU behind",
+        s->description().find("Eigen") != std::string::npos
+    );
+
+    auto solveOnce = [&](const std::string& name, const label iterations)
+    {
+        const bool updated = s->update();
+        Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
+        const linearSolver::performance p = s->solve(b, x, 1e-10);
+        unitTest::checkTrue(name + ": set up and converged",
+                            updated && p.converged);
+        unitTest::checkBelow
+        (
+            name + ": |b - M x|/|b|", p.relativeResidual, 1e-12
+        );
+        unitTest::checkBelow
+        (
+            name + ": max error vs x*", maxError(x, xStar), tolDirect
+        );
+        // (eigenLU reuses its factors: 1 GMRES iteration on them)
+        unitTest::checkTrue
+        (
+            name + ": Krylov iterations " + std::to_string(p.iterations)
+          + (iterations ? " (GMRES's counted)" : " (eigenLU's only)"),
+            iterations ? p.iterations == iterations : p.iterations <= 1
+        );
+        unitTest::checkTrue(name + ": exact solves after it", !s->inexact());
+    };
+    solveOnce("fallback, first solve of a step", 3);
+    solveOnce("fallback, second solve of the step", 0);
+    s->forgetHistory();
+    unitTest::checkTrue("fallback: next step GMRES first", s->inexact());
+    solveOnce("fallback, next step", 3);
+
+    FatalError.throwExceptions();
+    FatalIOError.throwExceptions();
+    for
+    (
+        const char* entries :
+        {
+            "type petsc; fallback { reuse no; }",
+            "type petsc; fallback { type eigenLU; reus no; }"
+        }
+    )
+    {
+        unitTest::checkTrue
+        (
+            std::string(entries) + ": FatalIOError",
+            throwsError
+            (
+                [&]()
+                {
+                    solverDict e(entries);
+                    linearSolver::New(e(), M());
+                }
+            )
+        );
+    }
+    FatalIOError.dontThrowExceptions();
+    FatalError.dontThrowExceptions();
+}
+
+
 } // End anonymous namespace
 
 
@@ -715,6 +811,7 @@ int main(int argc, char* argv[])
     twoBodies();
     nonSymmetric();
     errors();
+    fallback();
 
     return unitTest::exitCode();
 }

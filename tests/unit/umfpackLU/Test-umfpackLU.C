@@ -31,10 +31,12 @@ Description
         'reuse yes' and 'no'; then a regular matrix of the same pattern
         factorises and solves again to 1e-13;
       - a bad strategy, ordering or maxReuseIterations: FatalIOError;
-      - the default without a 'type' (linearSolver::New): eigenLU for a
-        2-D operator of 9 999 cells, umfpack for 10 000 (the default
-        nestedDissectionCells), eigenLU again for 10 000 cells with
-        nestedDissectionCells 20000.
+      - the default without a 'type' (linearSolver::New), krylovCells
+        20000: eigenLU for a 2-D operator of 9 999 cells, umfpack for
+        10 000 (the default nestedDissectionCells), eigenLU again for
+        10 000 cells with nestedDissectionCells 20000; with the default
+        krylovCells (5 000): eigenLU alone for 4 970 cells, GMRES + GAMG
+        with eigenLU behind it for 5 000 and with umfpack for 10 000.
 
 \*---------------------------------------------------------------------------*/
 
@@ -241,24 +243,53 @@ int main(int argc, char* argv[])
     singular();
 
     Info<< "Default solver by the cell count" << endl;
-    const std::string below = defaultFor(99, 101, "");
-    const std::string at = defaultFor(100, 100, "");
+    const std::string direct = "krylovCells 20000;";
+    const std::string below = defaultFor(99, 101, direct);
+    const std::string at = defaultFor(100, 100, direct);
     const std::string raised =
-        defaultFor(100, 100, "nestedDissectionCells 20000;");
+        defaultFor(100, 100, direct + " nestedDissectionCells 20000;");
+    const auto has = [](const std::string& d, const char* what)
+    {
+        return d.find(what) != std::string::npos;
+    };
     unitTest::checkTrue
     (
-        "9 999 cells: eigenLU (" + below + ")",
-        below.find("Eigen") != std::string::npos
+        "9 999 cells, krylovCells 20000: eigenLU (" + below + ")",
+        has(below, "Eigen") && !has(below, "Krylov method")
     );
     unitTest::checkTrue
     (
-        "10 000 cells: umfpack (" + at + ")",
-        at.find("UMFPACK") != std::string::npos
+        "10 000 cells, krylovCells 20000: umfpack (" + at + ")",
+        has(at, "UMFPACK") && !has(at, "Krylov method")
     );
     unitTest::checkTrue
     (
-        "10 000 cells, nestedDissectionCells 20000: eigenLU (" + raised + ")",
-        raised.find("Eigen") != std::string::npos
+        "10 000 cells, krylovCells and nestedDissectionCells 20000: eigenLU ("
+      + raised + ")",
+        has(raised, "Eigen") && !has(raised, "Krylov method")
+    );
+
+    // [S16d] from krylovCells (5 000) on: GMRES + GAMG, the direct solver
+    // of the cell count behind it
+    const std::string few = defaultFor(70, 71, "");
+    const std::string some = defaultFor(50, 100, "");
+    const std::string many = defaultFor(100, 100, "");
+    unitTest::checkTrue
+    (
+        "4 970 cells: eigenLU alone (" + few + ")",
+        has(few, "Eigen") && !has(few, "Krylov method")
+    );
+    unitTest::checkTrue
+    (
+        "5 000 cells: GMRES + GAMG, eigenLU behind it (" + some + ")",
+        has(some, "Krylov method gmres, preconditioner gamg")
+     && has(some, "where it fails") && has(some, "Eigen")
+    );
+    unitTest::checkTrue
+    (
+        "10 000 cells: GMRES + GAMG, umfpack behind it (" + many + ")",
+        has(many, "Krylov method gmres, preconditioner gamg")
+     && has(many, "where it fails") && has(many, "UMFPACK")
     );
 
     FatalError.throwExceptions();

@@ -76,7 +76,8 @@ Foam::linearSolvers::eigenLU::eigenLU
         (
             dict,
             {
-                "type", "directCellLimit", "nestedDissectionCells", "reuse",
+                "type", "directCellLimit", "nestedDissectionCells",
+                "krylovCells", "reuse",
                 "maxReuseIterations"
             }
         ),

@@ -110,7 +110,7 @@ Foam::linearSolvers::kluLU::kluLU
         (
             dict,
             {
-                "type", "directCellLimit", "nestedDissectionCells",
+                "type", "directCellLimit", "nestedDissectionCells", "krylovCells",
                 "refactorTolerance"
             }
         ),

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "linearSolver.H"
+#include "fallbackSolver.H"
 #include "PstreamReduceOps.H"
 #include "OSspecific.H"
 #include "HashSet.H"
@@ -51,67 +52,169 @@ Foam::autoPtr<Foam::linearSolver> Foam::linearSolver::New
     }
     else
     {
-        // A sparse direct factorisation wins on small 2-D problems (serial:
-        // Eigen's LU, parallel: PETSc's MUMPS, so that a parallel run takes
-        // the serial run's Newton iterations); its fill grows faster than
-        // the cell count, so 3-D and large runs default to an iterative
-        // solver with multigrid. Serial, from nestedDissectionCells on,
-        // UMFPACK with METIS: its fill grows slower than Eigen's COLAMD's
-        // ([S16]; on the ring wedge 0.73 times eigenLU's CPU per Newton
-        // iteration at 24 576 cells, 1.2-1.35 times at 6 144, 1.1 times at
-        // 1 536)
-        const label directCellLimit =
-            dict.lookupOrDefault<label>("directCellLimit", 50000);
-        const label nestedDissectionCells =
-            dict.lookupOrDefault<label>("nestedDissectionCells", 10000);
-        const label nCells =
-            returnReduce(matrix.nRows(), sumOp<label>());
-        const bool direct =
-            matrix.nComponents() < 3 && nCells <= directCellLimit;
-        solverType =
-            !direct || Pstream::parRun() ? "petsc"
-          : nCells < nestedDissectionCells ? "eigenLU"
-          : "umfpack";
-        const bool addMumps =
-            direct && Pstream::parRun() && !dict.found("preconditioner");
-        if (addMumps)
-        {
-            solverDict.add("preconditioner", word("mumps"));
-        }
-        Info<< "Linear solver: " << solverType
-            << (addMumps ? " with preconditioner mumps" : "")
-            << " (default for "
-            << (Pstream::parRun() ? "a parallel run" : "a serial run")
-            << " with " << matrix.nComponents() << " unknowns per cell and "
-            << nCells << " cells; directCellLimit " << directCellLimit
-            << (
-                   direct && !Pstream::parRun()
-                 ? ", nestedDissectionCells "
-                 + Foam::name(nestedDissectionCells)
-                 : string()
-               ).c_str()
-            << ")" << endl;
-
-        // Without the PETSc library: the serial sparse LU, or in parallel
-        // its block-Jacobi form as a preconditioner
-        const char* lib = libraryOf(solverType);
-        std::string loadError;
-        if
-        (
-            !dictionaryConstructorTablePtr_->found(solverType)
-         && !(lib && Foam::dlOpen(lib, loadError))
-        )
-        {
-            solverType = Pstream::parRun() ? "blockJacobiLU" : "eigenLU";
-            if (addMumps)
-            {
-                solverDict.remove("preconditioner");
-            }
-            Info<< "    (petsc is not built: " << solverType << " instead)"
-                << endl;
-        }
+        solverType = defaultChoice(solverDict, matrix);
     }
 
+    // [S16d] a solver behind this one, where it fails
+    if (solverDict.isDict("fallback"))
+    {
+        dictionary fallbackDict
+        (
+            solverDict.parent(), solverDict.subDict("fallback")
+        );
+        solverDict.remove("fallback");
+        if
+        (
+            fallbackDict.lookupOrDefault<word>("type", word()) == "petsc"
+         && !fallbackDict.found("prefix")
+        )
+        {
+            // PETSc's options of the two kept apart
+            fallbackDict.add
+            (
+                "prefix", word(solverDict.parent().dictName() + "_fallback_")
+            );
+        }
+        return autoPtr<linearSolver>
+        (
+            new linearSolvers::fallbackSolver
+            (
+                solverDict, matrix, select(solverType, solverDict, matrix),
+                fallbackDict
+            )
+        );
+    }
+    return select(solverType, solverDict, matrix);
+}
+
+
+Foam::word Foam::linearSolver::defaultChoice
+(
+    dictionary& solverDict,
+    const blockSparseMatrix& matrix
+)
+{
+    // A sparse direct factorisation wins on small 2-D problems (serial:
+    // Eigen's LU, parallel: PETSc's MUMPS, so that a parallel run takes
+    // the serial run's Newton iterations); its fill grows faster than
+    // the cell count, so 3-D and large runs default to an iterative
+    // solver with multigrid. Serial, from nestedDissectionCells on,
+    // UMFPACK with METIS: its fill grows slower than Eigen's COLAMD's
+    // ([S16]; on the ring wedge 0.73 times eigenLU's CPU per Newton
+    // iteration at 24 576 cells, 1.2-1.35 times at 6 144, 1.1 times at
+    // 1 536). Serial 2-D from krylovCells on, GMRES with GAMG, and that
+    // direct solver behind it where GMRES fails [S16d]
+    const dictionary& dict = solverDict;
+    const label directCellLimit =
+        dict.lookupOrDefault<label>("directCellLimit", 50000);
+    const label nestedDissectionCells =
+        dict.lookupOrDefault<label>("nestedDissectionCells", 10000);
+    const label krylovCells =
+        dict.lookupOrDefault<label>("krylovCells", 5000);
+    const label nCells = returnReduce(matrix.nRows(), sumOp<label>());
+    const bool direct = matrix.nComponents() < 3 && nCells <= directCellLimit;
+    const word directType =
+        nCells < nestedDissectionCells ? "eigenLU" : "umfpack";
+    const bool directBehind =
+        direct && !Pstream::parRun() && nCells >= krylovCells
+     && !dict.found("fallback");
+    word solverType =
+        !direct || Pstream::parRun() || directBehind ? "petsc" : directType;
+    const bool addMumps =
+        direct && Pstream::parRun() && !dict.found("preconditioner");
+    if (addMumps)
+    {
+        solverDict.add("preconditioner", word("mumps"));
+    }
+    if (directBehind)
+    {
+        addKrylovDefaults(solverDict, directType);
+    }
+    Info<< "Linear solver: " << solverType
+        << (addMumps ? " with preconditioner mumps" : "")
+        << (directBehind ? " with preconditioner gamg, " + directType
+          + " where it fails" : word()).c_str()
+        << " (default for "
+        << (Pstream::parRun() ? "a parallel run" : "a serial run")
+        << " with " << matrix.nComponents() << " unknowns per cell and "
+        << nCells << " cells; directCellLimit " << directCellLimit
+        << (
+               direct && !Pstream::parRun()
+             ? ", krylovCells " + Foam::name(krylovCells)
+             + ", nestedDissectionCells " + Foam::name(nestedDissectionCells)
+             : string()
+           ).c_str()
+        << ")" << endl;
+
+    // Without the PETSc library: the serial sparse LU, or in parallel
+    // its block-Jacobi form as a preconditioner
+    const char* lib = libraryOf(solverType);
+    std::string loadError;
+    if
+    (
+        !dictionaryConstructorTablePtr_->found(solverType)
+     && !(lib && Foam::dlOpen(lib, loadError))
+    )
+    {
+        solverType =
+            Pstream::parRun() ? "blockJacobiLU"
+          : directBehind ? directType
+          : "eigenLU";
+        solverDict.remove("preconditioner");
+        solverDict.remove("options");
+        solverDict.remove("fallback");
+        Info<< "    (petsc is not built: " << solverType << " instead)"
+            << endl;
+    }
+    return solverType;
+}
+
+
+void Foam::linearSolver::addKrylovDefaults
+(
+    dictionary& solverDict,
+    const word& directType
+)
+{
+    // GAMG's levels smoothed by Richardson with SOR, as in 3-D: PETSc's
+    // Chebyshev with point Jacobi rests on an eigenvalue estimate for a
+    // symmetric operator (doc/performance.md section 12); the user's
+    // options (under 'options') win
+    if (!solverDict.found("preconditioner"))
+    {
+        solverDict.add("preconditioner", word("gamg"));
+    }
+    if (!solverDict.found("maxIterations"))
+    {
+        // a solve that needs more costs more than the factorisation
+        // behind it
+        solverDict.add("maxIterations", label(100));
+    }
+    dictionary options(solverDict.subOrEmptyDict("options"));
+    if (!options.found("mg_levels_ksp_type"))
+    {
+        options.add("mg_levels_ksp_type", word("richardson"));
+    }
+    if (!options.found("mg_levels_pc_type"))
+    {
+        options.add("mg_levels_pc_type", word("sor"));
+    }
+    solverDict.set("options", options);
+
+    dictionary fallback;
+    fallback.add("type", directType);
+    solverDict.add("fallback", fallback);
+}
+
+
+Foam::autoPtr<Foam::linearSolver> Foam::linearSolver::select
+(
+    const word& solverType,
+    const dictionary& solverDict,
+    const blockSparseMatrix& matrix
+)
+{
+    const dictionary& dict = solverDict;
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(solverType);
 
     const char* lib = libraryOf(solverType);

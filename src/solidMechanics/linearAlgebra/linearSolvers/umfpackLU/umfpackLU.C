@@ -194,7 +194,8 @@ Foam::linearSolvers::umfpackLU::umfpackLU
         (
             dict,
             {
-                "type", "directCellLimit", "nestedDissectionCells", "reuse",
+                "type", "directCellLimit", "nestedDissectionCells",
+                "krylovCells", "reuse",
                 "maxReuseIterations", "strategy", "ordering"
             }
         ),
