@@ -20,6 +20,10 @@ Description
       - a singular Jacobian: the solve fails with the system's reason;
       - a residual with a noise floor of 1e-6: converges only with
         acceptableForceTolerance, and says so;
+      - a residual without a root (|R| 0.1-0.3): by default the solve runs
+        to maxNewtonIterations; with stopWhenStalled it fails early, reason
+        "stalled", the best iterate returned; with the noise floor at 1e-6
+        (below 1e-4 |F|) it runs on [S14f];
       - a 1-D penalty contact R = 1 - x - K max(x - g, 0) from a predictor
         just short of contact (no fraction of the first step lowers |R|):
         with rejectPredictor the solve restarts from xStart (the second
@@ -68,7 +72,10 @@ class testSystem
 {
 public:
 
-    enum kindType { SPRINGS, ATAN, SINGULAR, NOISY, PENALTY, AUGMENTED };
+    enum kindType
+    {
+        SPRINGS, ATAN, SINGULAR, NOISY, PENALTY, AUGMENTED, STALLED
+    };
 
     //- PENALTY: spring 1, obstacle at g with stiffness Kp
     static constexpr scalar g = 1e-3;
@@ -90,6 +97,8 @@ public:
     //  relative residual |b - M dx|/|b| is r
     scalar breakdownResidual = 0;
     bool chordOnly = false;
+    //- NOISY: the amplitude of its noise floor
+    scalar noise = 1e-6;
     label nSolvesSinceJacobian = 0;
 
     //- AUGMENTED: soft penalty, multiplier, its tolerance [m], updates
@@ -132,7 +141,7 @@ public:
                 break;
             case NOISY:
                 R.resize(1);
-                R(0) = -(x(0) - 1) + 1e-6*std::sin(1e9*x(0));
+                R(0) = -(x(0) - 1) + noise*std::sin(1e9*x(0));
                 break;
             case PENALTY:
                 R.resize(1);
@@ -141,6 +150,11 @@ public:
             case AUGMENTED:
                 R.resize(1);
                 R(0) = 1 - x(0) - max(lambda + Ka*(x(0) - g), 0);
+                break;
+            case STALLED:
+                // no root: |R| between 0.1 and 0.3 of |F| wherever x is
+                R.resize(1);
+                R(0) = 0.1*(2 + std::sin(1e9*x(0)));
                 break;
         }
     }
@@ -168,6 +182,7 @@ public:
                 // 2 x: singular at the start x = 0
                 return x(0) != 0;
             case NOISY:
+            case STALLED:
                 M.setConstant(1, 1, 1);
                 return true;
             case PENALTY:
@@ -364,6 +379,54 @@ int main()
         checkTrue("accepted below 1e-5", b.converged && b.accepted);
         checkBelow("accepted residual", b.forceResidual, 1e-5);
         checkAbs("near the root", x(0), 1, 1e-5);
+    }
+
+    Info<< "Stalled solves: stopWhenStalled [S14f]" << endl;
+    {
+        // |R| between 0.1 and 0.3 |F| everywhere: stalled far from an answer
+        testSystem sys(testSystem::STALLED);
+        Eigen::VectorXd x(Eigen::VectorXd::Zero(1)), x0(x);
+        newtonSolver runsOn
+        (
+            controls("forceTolerance 1e-9; stallIterations 2;")
+        );
+        const newtonSolver::result a = runsOn.solve(sys, x, x0);
+        checkAbs("default: to maxNewtonIterations", a.newtonIterations, 25, 0);
+
+        newtonSolver stops
+        (
+            controls
+            (
+                "forceTolerance 1e-9; stallIterations 2;"
+                " stopWhenStalled yes;"
+            )
+        );
+        x.setZero();
+        const newtonSolver::result b = stops.solve(sys, x, x0);
+        Info<< "    stopped after " << b.newtonIterations << " iterations: "
+            << b.reason.c_str() << endl;
+        checkTrue
+        (
+            "stopWhenStalled: fails, reason stalled",
+            !b.converged && b.reason.find("stalled") != std::string::npos
+        );
+        checkBelow("stopWhenStalled: early", b.newtonIterations, 20);
+        // the iterate returned is the one whose residual is reported, at
+        // most the start's (0.2)
+        Eigen::VectorXd Rb;
+        sys.residual(x, Rb);
+        checkAbs("the returned iterate's |R|", Rb.norm(), b.forceResidual, 1e-14);
+        checkBelow("the best iterate, below the start's", b.forceResidual, 0.2);
+
+        // the floor at 1e-6 |F|, below 1e-4: near the answer, it runs on
+        testSystem near(testSystem::NOISY);
+        x.setZero();
+        const newtonSolver::result c = stops.solve(near, x, x0);
+        checkTrue
+        (
+            "stalled below 1e-4 |F|: runs on (" + c.reason + ")",
+            c.newtonIterations == 25 && c.reason.find("stalled") == string::npos
+        );
     }
 
     Info<< "Penalty contact from a predictor short of contact" << endl;

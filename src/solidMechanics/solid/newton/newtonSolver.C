@@ -47,6 +47,11 @@ namespace Foam
 //  onset: a face just short of its onset does not stall the solve
 static const scalar minOnsetFraction = 1e-2;
 
+//- [S14f] A stalled solve stops early only above this residual (of |F|):
+//  below it Newton is near the answer, where faces cycling between
+//  stick and slip may still settle (the ironing's steps at 1e-7-1e-6)
+static const scalar stalledFarResidual = 1e-4;
+
 //- [S14b] The fractions of the step to the onset tried after a failed line
 //  search ('afterLineSearch'): 1, 1/2, 1/4 and 1/8 of it
 static const label nOnsetTrials = 4;
@@ -120,6 +125,7 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
         dict.lookupOrDefault<scalar>("acceptableForceTolerance", 0)
     ),
     stallIterations_(dict.lookupOrDefault<label>("stallIterations", 8)),
+    stopWhenStalled_(dict.lookupOrDefault<bool>("stopWhenStalled", false)),
     displacementTol_
     (
         dict.lookupOrDefault<scalar>("displacementTolerance", 1e-7)
@@ -604,6 +610,26 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
             {
                 res.reason = "no convergence in maxNewtonIterations";
             }
+            break;
+        }
+        if
+        (
+            stopWhenStalled_ && it - itBest >= stallIterations_
+         && bestResidual > stalledFarResidual
+        )
+        {
+            // the best |R| has not fallen by 10 % in stallIterations
+            // iterations, far from the answer: the retries start now, not
+            // at itLimit
+            if (normBest < normR)
+            {
+                x = xBest;
+                evaluate(sys, x, R);
+                res.forceResidual = bestResidual;
+            }
+            res.reason =
+                "stalled: |R| not 10 % below its best for "
+              + Foam::name(stallIterations_) + " iterations";
             break;
         }
 
