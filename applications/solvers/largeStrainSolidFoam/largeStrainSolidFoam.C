@@ -46,6 +46,7 @@ Description
 #include "caseLock.H"
 #include "timeDirectoryWriter.H"
 #include "strictDictionary.H"
+#include "numberRange.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -149,12 +150,16 @@ int main(int argc, char *argv[])
 
     #include "setRootCase.H"
 
-    // [S19b] controls Time would divide by, one run per case, a start time
-    // that was written completely
+    // [S19b] no number OpenFOAM's reading would stop on with SIGFPE,
+    // controls Time would divide by, one run per case, a start time that
+    // was written completely
+    strictDictionary::checkNumberRanges(args.globalPath()/"system");
+    strictDictionary::checkNumberRanges(args.globalPath()/"constant");
     checkTimeControls(args);
     #include "createTime.H"
     const caseLock lock(runTime, args.executable());
     timeDirectoryWriter::selectStartTime(runTime);
+    strictDictionary::checkNumberRanges(runTime.timePath());
     timeDirectoryWriter writer(runTime);
 
     #include "createMesh.H"

@@ -61,6 +61,7 @@ Description
 #include "argList.H"
 #include "IFstream.H"
 #include "strictDictionary.H"
+#include "numberRange.H"
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "dictionary.H"
@@ -117,6 +118,8 @@ int main(int argc, char* argv[])
         dictFile = caseDir/dictFile;
     }
 
+    // [S19b] a number its reading would stop on with SIGFPE
+    strictDictionary::checkNumberRange(dictFile);
     IFstream is(dictFile);
     if (!is.good())
     {

@@ -71,6 +71,7 @@ Usage
 #include "Random.H"
 #include "clockTime.H"
 #include "strictDictionary.H"
+#include "numberRange.H"
 #include "testIdentification.H"
 
 using namespace Foam;
@@ -232,6 +233,8 @@ int main(int argc, char *argv[])
     (
         args.getOrDefault<fileName>("dict", "system/frictionFromTestDict")
     );
+    // [S19b] a number its reading would stop on with SIGFPE
+    strictDictionary::checkNumberRange(dictFile);
     IFstream is(dictFile);
     if (!is.good())
     {

@@ -47,6 +47,7 @@ Usage
 #include "IFstream.H"
 #include "driverModes.H"
 #include "strictDictionary.H"
+#include "numberRange.H"
 #include "HashTable.H"
 
 using namespace Foam;
@@ -75,6 +76,8 @@ int main(int argc, char *argv[])
     (
         args.getOrDefault<fileName>("dict", "frictionLawDriverDict")
     );
+    // [S19b] a number its reading would stop on with SIGFPE
+    strictDictionary::checkNumberRange(dictFile);
     IFstream is(dictFile);
     if (!is.good())
     {

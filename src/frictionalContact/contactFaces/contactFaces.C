@@ -19,6 +19,7 @@ License
 #include "surfaceFields.H"
 #include "emptyFvPatch.H"
 #include "strictDictionary.H"
+#include "frictionParameters.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -411,12 +412,53 @@ void Foam::contactFaces::readContactFaces(const dictionary& dict)
       ? width
       : width*contactSurface::maxCellDepth(p);
 
+    // [C2b] the smoothed onset starts at a gap of its width: a face that
+    // far is searched (a wider onset would make the force jump where the
+    // search ends, and sqr(gN + e) of a huge width overflows)
+    const scalar search = contactSurface::readSearchDistance(dict, p);
+    if (!(contactSmoothing_ < search))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword '" << key << "' in dictionary " << dict.name()
+            << " gives the smoothed contact onset a width of "
+            << contactSmoothing_ << " m, not below the search distance "
+            << search << " m ('searchDistance'): the contact force would"
+            << " start beyond the faces searched; expected a width below it"
+            << nl << exit(FatalIOError);
+    }
+
     // The law needs the solid's moduli for automatic penalties; utilities
     // such as decomposePar read D without them and only copy the entries,
     // for which the law's state layout is enough (penalties do not change
     // it)
     if (p.boundaryMesh().mesh().foundObject<IOdictionary>("mechanicalProperties"))
     {
+        // [C5] an automatic penalty (scale x the cells' stiffness) that
+        // a friction law can hold [F2b]: a scale beyond it refused here,
+        // where it was written (the product would overflow)
+        const scalar k = automaticPenalty(1);
+        const scalar kMax = frictionParameters::representable.second();
+        const Pair<word> keys("penaltyScale", "tangentialPenaltyScale");
+        const Pair<word> lawKeys("KN", "KT");
+        const Pair<scalar> scales(penaltyScale_, tangentialPenaltyScale_);
+        for (label s = 0; s < 2; ++s)
+        {
+            if
+            (
+                !lawDict_.found(lawKeys[s]) && k > 1e-270
+             && !(scales[s] <= kMax/k)
+            )
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Keyword '" << keys[s] << "' in dictionary "
+                    << dict.name() << " is " << scales[s] << ": the"
+                    << " automatic penalty " << lawKeys[s] << " = "
+                    << keys[s] << " x " << k << " Pa/m (the cells'"
+                    << " stiffness) would exceed " << kMax << " Pa/m, the"
+                    << " largest a friction law keeps finite" << nl
+                    << exit(FatalIOError);
+            }
+        }
         createLaw();
         if (solidRestartState::expected(p.boundaryMesh().mesh().time()))
         {

@@ -19,6 +19,11 @@ Description
         the file;
       - the file of an entry #include'd into a dictionary is that file,
         and nameAfterSource() names it in the dictionary's name;
+      - with every directive of OpenFOAM v1912 (#include and its kin,
+        #inputMode, #default ... #error, #remove, #includeFunc, #ifeq,
+        #if, #eval, #calc, #codeStream) and a $variable written on one
+        line inside the braces of a sub-dictionary, the entries' files
+        are still found (the dictionary re-read raw does not break);
       - every friction law accepts its full dictionary (all optional
         keywords given) and refuses one unknown keyword added to it.
 
@@ -31,6 +36,7 @@ Description
 #include "IFstream.H"
 #include "OFstream.H"
 #include "OSspecific.H"
+#include <algorithm>
 
 using namespace Foam;
 
@@ -234,6 +240,137 @@ int main()
             "one-line #include: the patch's own refusal names D1, not lawDict",
             has(m2, "note") && has(m2, "D1") && !has(m2, "lawDict")
         );
+        rmDir(dir);
+    }
+
+    Info<< "Every OpenFOAM directive written on one line inside braces"
+        << endl;
+    {
+        // 'frictionLaw { <form> }' on one line of D: OpenFOAM's reading
+        // gives the law lawDict's entries (muStatc among them) and 'extra'
+        // written in D; the re-read raw (strictDictionary::rawText) must
+        // not break, and must find muStatc in the file that holds it and
+        // 'extra' in D. #calc and #codeStream compile code, which OpenFOAM
+        // refuses to its administrator (the tests run as root): their
+        // dictionaries are made by hand, as OpenFOAM reads them otherwise.
+        const fileName dir(cwd()/"strictDictionaryDirectives");
+        mkDir(dir/"site"/"etc");
+        {
+            OFstream os(dir/"lawDict");
+            os  << "type coulomb;\nmu 0.3;\nmuStatc 0.4;\n";
+        }
+        {
+            OFstream os(dir/"site"/"etc"/"etcLawDict");
+            os  << "type coulomb;\nmu 0.3;\nmuStatc 0.4;\n";
+        }
+        // #includeEtc finds etcLawDict in $WM_PROJECT_SITE/etc
+        setEnv("WM_PROJECT_SITE", dir/"site", true);
+
+        struct form
+        {
+            std::string text;
+            std::string muStatcFile;    // lawDict or etcLawDict
+            bool readHere;              // OpenFOAM reads it as root
+        };
+        const form forms[] =
+        {
+            {"#inputMode merge #include \"lawDict\" extra 1;", "lawDict", true},
+            {"#default extra 1; #include \"lawDict\"", "lawDict", true},
+            {"#merge extra 1; #include \"lawDict\"", "lawDict", true},
+            {"#overwrite extra 1; #include \"lawDict\"", "lawDict", true},
+            {"#warn extra 1; #include \"lawDict\"", "lawDict", true},
+            {"#error extra 1; #include \"lawDict\"", "lawDict", true},
+            {"#default sub { a 1; } #include \"lawDict\" extra 1;",
+             "lawDict", true},
+            {"#remove mu #include \"lawDict\" extra 1;", "lawDict", true},
+            {"#include \"lawDict\" #remove mu  extra 1;", "lawDict", true},
+            {"#remove (a \"b.*\") #include \"lawDict\" extra 1;",
+             "lawDict", true},
+            {"#include lawDict extra 1;", "lawDict", true},
+            {"#sinclude \"lawDict\" extra 1;", "lawDict", true},
+            {"#includeIfPresent \"noSuchFile\" #include \"lawDict\" extra 1;",
+             "lawDict", true},
+            {"#sincludeEtc \"noSuchFile\" #include \"lawDict\" extra 1;",
+             "lawDict", true},
+            {"#includeEtc \"etcLawDict\" extra 1;", "etcLawDict", true},
+            {"#includeFunc patchAverage(name=bottom,fields=(p))"
+             " #include \"lawDict\" extra 1;", "lawDict", true},
+            {"#ifeq a a #include \"lawDict\" #else #include \"noSuchFile\""
+             " #endif extra 1;", "lawDict", true},
+            {"#ifeq a b extra 2; #else #include \"lawDict\" #endif extra 1;",
+             "lawDict", true},
+            {"#ifeq $type frictionalContact #include \"lawDict\" #endif"
+             " extra 1;", "lawDict", true},
+            {"#if 1\n #include \"lawDict\" #else extra 2; #endif extra 1;",
+             "lawDict", true},
+            {"#if 0\n extra 2; #elif 1\n #include \"lawDict\" #endif extra 1;",
+             "lawDict", true},
+            {"$lawBase #include \"lawDict\" extra 1;", "lawDict", true},
+            {"#include \"lawDict\" extra #eval{ 1+2 };", "lawDict", true},
+            {"#include \"lawDict\" extra #eval \"1+2\";", "lawDict", true},
+            {"#calc \"\\\"extra 1;\\\"\" #include \"lawDict\"", "lawDict",
+             false},
+            {"#codeStream { code #{ os << \"extra 1;\"; #}; }"
+             " #include \"lawDict\"", "lawDict", false},
+            {"#include \"lawDict\" extra #calc \"1+2\";", "lawDict", false}
+        };
+        label formi = 0;
+        for (const form& f : forms)
+        {
+            const fileName D(dir/("D" + Foam::name(formi++)));
+            {
+                OFstream os(D);
+                os  << "lawBase { note 2; }\nbottom\n{\n"
+                    << "    type frictionalContact;\n"
+                    << "    frictionLaw { " << f.text.c_str() << " }\n"
+                    << "    after 1;\n}\n";
+            }
+            std::string line(f.text);
+            std::replace(line.begin(), line.end(), '\n', ' ');
+            std::string problem;
+            try
+            {
+                dictionary law;
+                if (f.readHere)
+                {
+                    IFstream is(D);
+                    dictionary top(is);
+                    law = top.subDict("bottom").subDict("frictionLaw");
+                }
+                else
+                {
+                    law.name() = D + ".bottom.frictionLaw";
+                    law.add("type", "coulomb");
+                    law.add("mu", 0.3);
+                    law.add("muStatc", 0.4);
+                    law.add("extra", 1);
+                }
+                if (!law.found("muStatc") || !law.found("extra"))
+                {
+                    problem = "OpenFOAM's reading lacks muStatc or extra";
+                }
+                const fileName srcMu(strictDictionary::sourceFile(law, "muStatc"));
+                const fileName srcExtra(strictDictionary::sourceFile(law, "extra"));
+                if (srcMu.name() != f.muStatcFile)
+                {
+                    problem += " muStatc from " + srcMu;
+                }
+                if (srcExtra != D)
+                {
+                    problem += " extra from " + srcExtra;
+                }
+                strictDictionary::nameAfterSource(law);
+            }
+            catch (const Foam::error& e)
+            {
+                problem += " error: " + std::string(e.message());
+            }
+            unitTest::checkTrue
+            (
+                "{ " + line + " }: " + (problem.empty() ? "ok" : problem),
+                problem.empty()
+            );
+        }
         rmDir(dir);
     }
 

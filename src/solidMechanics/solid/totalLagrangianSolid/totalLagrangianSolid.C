@@ -163,6 +163,20 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
     bodySize_(mag(mesh.bounds().span())),
     checkStep_(1e-8)
 {
+    // D is a displacement in metres: a field file of other dimensions is
+    // a wrong file, which the solver's arithmetic would not notice before
+    // the first write
+    if (D_.dimensions() != dimLength)
+    {
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__, D_.objectPath(), -1
+        )   << "Keyword 'dimensions' in " << D_.objectPath() << " is "
+            << D_.dimensions() << "; expected " << dimLength
+            << " (the displacement D, metres)" << nl
+            << exit(FatalIOError);
+    }
+
     // Constructing from a tmp drops the write option
     Dprevious_.writeOpt() = IOobject::AUTO_WRITE;
 
