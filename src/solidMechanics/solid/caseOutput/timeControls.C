@@ -13,6 +13,7 @@ License
 #include "timeControls.H"
 #include "IFstream.H"
 #include "dictionary.H"
+#include "strictDictionary.H"
 #include <cmath>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -34,6 +35,44 @@ static scalar finiteEntry(const dictionary& dict, const word& key)
     return value;
 }
 
+//- A keyword of controlDict one or two letters from one that OpenFOAM's
+//  Time (or its function objects and switches) reads is taken for a
+//  misspelling of it: Time ignores an unknown keyword, so 'writePrecison'
+//  would silently write 6 digits. Other keywords stay the user's
+//  variables ($name elsewhere in the file), which controlDict commonly
+//  holds
+static void checkNearMisses(const dictionary& dict)
+{
+    static const wordList known
+    {
+        "FoamFile", "application", "startFrom", "startTime", "stopAt",
+        "endTime", "deltaT", "writeControl", "writeInterval",
+        "writeFrequency", "purgeWrite", "writeFormat", "writePrecision",
+        "writeVersion", "writeCompression", "timeFormat", "timePrecision",
+        "runTimeModifiable", "adjustTimeStep", "maxCo", "maxDeltaT",
+        "graphFormat", "functions", "libs", "DebugSwitches", "InfoSwitches",
+        "OptimisationSwitches", "DimensionSets", "DimensionedConstants",
+        "fileHandler", "profiling", "printExecutionFormat",
+        "cacheTemporaryObjects"
+    };
+    for (const word& key : dict.toc())
+    {
+        if (known.found(key))
+        {
+            continue;
+        }
+        const word meant = strictDictionary::nearest(key, known);
+        if (!meant.empty())
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown keyword '" << key << "' in " << dict.name()
+                << ". Did you mean '" << meant << "'? (OpenFOAM's Time would"
+                << " ignore it and take its default)" << nl
+                << exit(FatalIOError);
+        }
+    }
+}
+
 } // End namespace Foam
 
 
@@ -49,6 +88,7 @@ void Foam::checkTimeControls(const argList& args)
         return;
     }
     const dictionary dict(is);
+    checkNearMisses(dict);
 
     const scalar deltaT = finiteEntry(dict, "deltaT");
     if (!(deltaT > 0))
