@@ -593,10 +593,8 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
         }
         res.multipliersConverged = false;
         const scalar bestResidual = Fscale > 0 ? normBest/Fscale : 1;
-        const bool accept =
-            bestResidual <= acceptableForceTol_
-         && (it == itLimit || it - itBest >= stallIterations_);
-        if (accept || it == itLimit)
+        // a solve that ends without converging returns its best iterate
+        const auto returnBest = [&]()
         {
             if (normBest < normR)
             {
@@ -604,6 +602,13 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
                 evaluate(sys, x, R);
                 res.forceResidual = bestResidual;
             }
+        };
+        const bool accept =
+            bestResidual <= acceptableForceTol_
+         && (it == itLimit || it - itBest >= stallIterations_);
+        if (accept || it == itLimit)
+        {
+            returnBest();
             res.converged = accept;
             res.accepted = accept;
             if (!accept)
@@ -621,12 +626,7 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
             // the best |R| has not fallen by 10 % in stallIterations
             // iterations, far from the answer: the retries start now, not
             // at itLimit
-            if (normBest < normR)
-            {
-                x = xBest;
-                evaluate(sys, x, R);
-                res.forceResidual = bestResidual;
-            }
+            returnBest();
             res.reason =
                 "stalled: |R| not 10 % below its best for "
               + Foam::name(stallIterations_) + " iterations";
