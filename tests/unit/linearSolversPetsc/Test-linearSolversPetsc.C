@@ -45,7 +45,9 @@ Description
         behind it: the failed system solved to round-off, its iterations
         counted, the rest of the step by eigenLU alone, the next step by
         GMRES first; a fallback without a type or with an unknown keyword
-        is a FatalIOError.
+        is a FatalIOError; the default from krylovCells with the user's
+        preconditioner (mumps) solves, without GAMG's entries (unread
+        options are an error).
 
     With -report <file> (argList; serial, or -parallel under mpirun): the
     3-D (or -dimension 2) operator of -cells n per direction solved with
@@ -754,6 +756,25 @@ void fallback()
     s->forgetHistory();
     unitTest::checkTrue("fallback: next step GMRES first", s->inexact());
     solveOnce("fallback, next step", 3);
+
+    // The default from krylovCells with a preconditioner of the user's:
+    // GAMG's own entries are not added (PETSc would not read them: an
+    // error after the first solve), the LU is behind it
+    {
+        const outcome o =
+            solveWith("krylovCells 100; preconditioner mumps;", M());
+        Info<< "    " << o.description.c_str() << endl;
+        checkSolved
+        (
+            "default from krylovCells, preconditioner mumps", o, tolDirect
+        );
+        unitTest::checkTrue
+        (
+            "default from krylovCells, preconditioner mumps: eigenLU behind",
+            o.description.find("mumps") != std::string::npos
+         && o.description.find("where it fails") != std::string::npos
+        );
+    }
 
     FatalError.throwExceptions();
     FatalIOError.throwExceptions();

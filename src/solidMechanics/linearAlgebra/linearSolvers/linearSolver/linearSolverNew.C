@@ -132,8 +132,13 @@ Foam::word Foam::linearSolver::defaultChoice
     }
     Info<< "Linear solver: " << solverType
         << (addMumps ? " with preconditioner mumps" : "")
-        << (directBehind ? " with preconditioner gamg, " + directType
-          + " where it fails" : word()).c_str()
+        << (
+               directBehind
+             ? " with preconditioner "
+             + solverDict.get<word>("preconditioner") + ", " + directType
+             + " where it fails"
+             : word()
+           ).c_str()
         << " (default for "
         << (Pstream::parRun() ? "a parallel run" : "a serial run")
         << " with " << matrix.nComponents() << " unknowns per cell and "
@@ -179,19 +184,10 @@ void Foam::linearSolver::addKrylovDefaults
     // GAMG's levels smoothed by Richardson with SOR, as in 3-D: PETSc's
     // Chebyshev with point Jacobi rests on an eigenvalue estimate for a
     // symmetric operator (doc/performance.md section 12); the user's
-    // options (under 'options') win
+    // entries (a preconditioner of their own, 'options') win
     if (!solverDict.found("preconditioner"))
     {
         solverDict.add("preconditioner", word("gamg"));
-    }
-    if (!solverDict.found("nearNullSpace"))
-    {
-        // a one-cell aggregate's 2 unknowns carry the 2 translations, not
-        // the 3 rigid-body modes (whose coarse rows are then zero, and
-        // block SOR fails on them: the flat punch at 3 200 cells, 16
-        // set-ups; shifting those pivots made GMRES break down in 34 of
-        // the ring's 100 steps, doc/performance.md 17.1)
-        solverDict.add("nearNullSpace", word("translations"));
     }
     if (!solverDict.found("maxIterations"))
     {
@@ -199,16 +195,30 @@ void Foam::linearSolver::addKrylovDefaults
         // behind it
         solverDict.add("maxIterations", label(100));
     }
-    dictionary options(solverDict.subOrEmptyDict("options"));
-    if (!options.found("mg_levels_ksp_type"))
+    // GAMG's entries with GAMG only: under another preconditioner PETSc
+    // would never read them, which is an error after the first solve
+    if (solverDict.get<word>("preconditioner") == "gamg")
     {
-        options.add("mg_levels_ksp_type", word("richardson"));
+        if (!solverDict.found("nearNullSpace"))
+        {
+            // a one-cell aggregate's 2 unknowns carry the 2 translations,
+            // not the 3 rigid-body modes (whose coarse rows are then zero,
+            // and block SOR fails on them: the flat punch at 3 200 cells,
+            // 16 set-ups; shifting those pivots made GMRES break down in
+            // 34 of the ring's 100 steps, doc/performance.md 17.1)
+            solverDict.add("nearNullSpace", word("translations"));
+        }
+        dictionary options(solverDict.subOrEmptyDict("options"));
+        if (!options.found("mg_levels_ksp_type"))
+        {
+            options.add("mg_levels_ksp_type", word("richardson"));
+        }
+        if (!options.found("mg_levels_pc_type"))
+        {
+            options.add("mg_levels_pc_type", word("sor"));
+        }
+        solverDict.set("options", options);
     }
-    if (!options.found("mg_levels_pc_type"))
-    {
-        options.add("mg_levels_pc_type", word("sor"));
-    }
-    solverDict.set("options", options);
 
     dictionary fallback;
     fallback.add("type", directType);
