@@ -125,7 +125,10 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
         dict.lookupOrDefault<scalar>("acceptableForceTolerance", 0)
     ),
     stallIterations_(dict.lookupOrDefault<label>("stallIterations", 8)),
-    stopWhenStalled_(dict.lookupOrDefault<bool>("stopWhenStalled", false)),
+    stallStopIterations_
+    (
+        dict.lookupOrDefault<label>("stallStopIterations", 12)
+    ),
     displacementTol_
     (
         dict.lookupOrDefault<scalar>("displacementTolerance", 1e-7)
@@ -228,12 +231,17 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
             << " is " << contactLookAhead_ << "; expected a number of"
             << " linear solves >= 0 (0: off)" << nl << exit(FatalIOError);
     }
-    if (acceptableForceTol_ < 0 || stallIterations_ < 1 || krylovRefresh_ < 0)
+    if
+    (
+        acceptableForceTol_ < 0 || stallIterations_ < 1
+     || stallStopIterations_ < 0 || krylovRefresh_ < 0
+    )
     {
         FatalIOErrorInFunction(dict)
             << "Dictionary " << dict.name() << ": expected"
             << " acceptableForceTolerance >= 0 (got " << acceptableForceTol_
             << "), stallIterations >= 1 (got " << stallIterations_
+            << "), stallStopIterations >= 0 (got " << stallStopIterations_
             << ") and krylovRefresh >= 0 (got " << krylovRefresh_ << ")"
             << nl << exit(FatalIOError);
     }
@@ -619,17 +627,17 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
         }
         if
         (
-            stopWhenStalled_ && it - itBest >= stallIterations_
+            stallStopIterations_ > 0 && it - itBest >= stallStopIterations_
          && bestResidual > stalledFarResidual
         )
         {
-            // the best |R| has not fallen by 10 % in stallIterations
-            // iterations, far from the answer: the retries start now, not
-            // at itLimit
+            // [S14f] the best |R| has not fallen by 10 % in
+            // stallStopIterations iterations, far from the answer: the
+            // retries start now, not at itLimit
             returnBest();
             res.reason =
                 "stalled: |R| not 10 % below its best for "
-              + Foam::name(stallIterations_) + " iterations";
+              + Foam::name(stallStopIterations_) + " iterations";
             break;
         }
 
