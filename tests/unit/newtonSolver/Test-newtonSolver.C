@@ -20,10 +20,10 @@ Description
       - a singular Jacobian: the solve fails with the system's reason;
       - a residual with a noise floor of 1e-6: converges only with
         acceptableForceTolerance, and says so;
-      - a residual without a root (|R| 0.1-0.3): with stallStopIterations 0
-        the solve runs to maxNewtonIterations; by default (12) and with 2 it
-        fails early, reason "stalled", the best iterate returned; with the
-        noise floor at 1e-6 (below 1e-4 |F|) it runs on [S14f];
+      - a residual without a root (|R| 0.1-0.3): by default the solve runs
+        to maxNewtonIterations; with stallStopIterations 12 and 2 it fails
+        early, reason "stalled", the best iterate returned; with the noise
+        floor at 1e-6 (below 1e-4 |F|) it runs on [S14f];
       - a 1-D penalty contact R = 1 - x - K max(x - g, 0) from a predictor
         just short of contact (no fraction of the first step lowers |R|):
         with rejectPredictor the solve restarts from xStart (the second
@@ -386,21 +386,22 @@ int main()
         // |R| between 0.1 and 0.3 |F| everywhere: stalled far from an answer
         testSystem sys(testSystem::STALLED);
         Eigen::VectorXd x(Eigen::VectorXd::Zero(1)), x0(x);
-        newtonSolver runsOn
-        (
-            controls("forceTolerance 1e-9; stallStopIterations 0;")
-        );
+        newtonSolver runsOn(controls("forceTolerance 1e-9;"));
         const newtonSolver::result a = runsOn.solve(sys, x, x0);
-        checkAbs("off (0): to maxNewtonIterations", a.newtonIterations, 25, 0);
+        checkAbs("default (off): to maxNewtonIterations", a.newtonIterations, 25, 0);
 
-        newtonSolver byDefault(controls("forceTolerance 1e-9;"));
+        newtonSolver twelve
+        (
+            controls("forceTolerance 1e-9; stallStopIterations 12;")
+        );
         x.setZero();
-        const newtonSolver::result d = byDefault.solve(sys, x, x0);
-        Info<< "    default: stopped after " << d.newtonIterations
+        const newtonSolver::result d = twelve.solve(sys, x, x0);
+        Info<< "    12: stopped after " << d.newtonIterations
             << " iterations: " << d.reason.c_str() << endl;
         checkTrue
         (
-            "default (12): fails before maxNewtonIterations, reason stalled",
+            "stallStopIterations 12: fails before maxNewtonIterations, reason"
+            " stalled",
             !d.converged && d.newtonIterations < 25
          && d.reason.find("stalled") != std::string::npos
         );

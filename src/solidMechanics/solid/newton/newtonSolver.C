@@ -127,7 +127,7 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
     stallIterations_(dict.lookupOrDefault<label>("stallIterations", 8)),
     stallStopIterations_
     (
-        dict.lookupOrDefault<label>("stallStopIterations", 12)
+        dict.lookupOrDefault<label>("stallStopIterations", 0)
     ),
     displacementTol_
     (
