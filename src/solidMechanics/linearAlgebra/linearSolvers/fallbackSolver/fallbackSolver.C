@@ -24,15 +24,13 @@ Foam::linearSolvers::fallbackSolver::fallbackSolver
 :
     linearSolver(dict, matrix),
     first_(std::move(first)),
-    fallbackDict_(fallbackDict),
     fallback_(),
-    fallen_(false),
-    fallbackCurrent_(false)
+    fallen_(false)
 {
-    if (!fallbackDict_.found("type"))
+    if (!fallbackDict.found("type"))
     {
-        FatalIOErrorInFunction(fallbackDict_)
-            << "Dictionary " << fallbackDict_.name() << " names no 'type':"
+        FatalIOErrorInFunction(fallbackDict)
+            << "Dictionary " << fallbackDict.name() << " names no 'type':"
             << " expected the linear solver that takes over where "
             << dict.lookupOrDefault<word>("type", "the first") << " fails"
             << " (e.g. type eigenLU;)" << nl << exit(FatalIOError);
@@ -40,7 +38,7 @@ Foam::linearSolvers::fallbackSolver::fallbackSolver
 
     // constructed now, so that a bad entry stops the run before its first
     // step (its pattern is analysed when it first factorises)
-    fallback_ = linearSolver::New(fallbackDict_, matrix);
+    fallback_ = linearSolver::New(fallbackDict, matrix);
 }
 
 
@@ -52,8 +50,7 @@ bool Foam::linearSolvers::fallbackSolver::fallBack(const string& why)
         << why.c_str() << "): " << fallback_->type()
         << " for the rest of the load step" << endl;
     fallen_ = true;
-    fallbackCurrent_ = fallback_->update();
-    return fallbackCurrent_;
+    return fallback_->update();
 }
 
 
@@ -72,7 +69,6 @@ void Foam::linearSolvers::fallbackSolver::forgetHistory()
     first_->forgetHistory();
     fallback_->forgetHistory();
     fallen_ = false;
-    fallbackCurrent_ = false;
 }
 
 
@@ -92,10 +88,8 @@ bool Foam::linearSolvers::fallbackSolver::update()
 {
     if (fallen_)
     {
-        fallbackCurrent_ = fallback_->update();
-        return fallbackCurrent_;
+        return fallback_->update();
     }
-    fallbackCurrent_ = false;
     if (first_->update())
     {
         return true;
