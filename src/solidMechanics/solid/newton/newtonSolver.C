@@ -52,10 +52,6 @@ static const scalar minOnsetFraction = 1e-2;
 //  stick and slip may still settle (the ironing's steps at 1e-7-1e-6)
 static const scalar stalledFarResidual = 1e-4;
 
-//- [S14b] The fractions of the step to the onset tried after a failed line
-//  search ('afterLineSearch'): 1, 1/2, 1/4 and 1/8 of it
-static const label nOnsetTrials = 4;
-
 //- |R|, or GREAT where R is not finite (a trial the line search rejects)
 static scalar finiteNorm(const Eigen::VectorXd& R)
 {
@@ -135,7 +131,6 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
     ),
     maxNewton_(dict.lookupOrDefault<label>("maxNewtonIterations", 25)),
     verbose_(dict.lookupOrDefault<bool>("verbose", false)),
-    fullStepFallback_(dict.lookupOrDefault<bool>("fullStepFallback", false)),
     rejectPredictor_(dict.lookupOrDefault<bool>("rejectPredictor", false)),
     initialForcing_(dict.lookupOrDefault<scalar>("initialForcingTerm", 1e-4)),
     finalChordStep_(dict.lookupOrDefault<bool>("finalChordStep", true)),
@@ -150,7 +145,6 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
     (
         dict.lookupOrDefault<scalar>("onsetContinuation", 10)
     ),
-    lineSearchMemory_(dict.lookupOrDefault<label>("lineSearchMemory", 1)),
     krylovRefresh_(dict.lookupOrDefault<label>("krylovRefresh", 15)),
     augmentInside_
     (
@@ -165,6 +159,7 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
         dict.lookupOrDefault<scalar>("augmentForcingTerm", 1e-3)
     ),
     gmres_(dict),
+    lineSearch_(dict, stopAtContactOnset_ == onsetStop::afterLineSearch),
     nResidualEvaluations_(0),
     jacobianFree_(false)
 {
@@ -186,14 +181,6 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
             << " (got " << forceTol_ << "), displacementTolerance > 0 (got "
             << displacementTol_ << ") and maxNewtonIterations >= 1 (got "
             << maxNewton_ << ")" << nl << exit(FatalIOError);
-    }
-    if (lineSearchMemory_ < 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword 'lineSearchMemory' in dictionary " << dict.name()
-            << " is " << lineSearchMemory_ << "; expected an integer >= 1"
-            << " (1: |R| must fall at every iteration)" << nl
-            << exit(FatalIOError);
     }
     if (!(initialForcing_ > 0) || initialForcing_ >= 1)
     {
@@ -460,6 +447,350 @@ bool Foam::newtonSolver::step
 }
 
 
+void Foam::newtonSolver::iterationState::restart
+(
+    const Eigen::VectorXd& x,
+    const label itStart
+)
+{
+    recentNorms.clear();
+    recentNorms.append(normR);
+    xBest = x;
+    normBest = normR;
+    itBest = itStart;
+    dxPrev = dxCur = 0;
+    fullPrev = fullLast = false;
+    firstSolve = true;
+    chordTaken = false;
+}
+
+
+Foam::scalar Foam::newtonSolver::relativeForceResidual
+(
+    const scalar normR,
+    const scalar forceScale
+)
+{
+    return forceScale > 0 ? normR/forceScale : (normR > 0 ? 1 : 0);
+}
+
+
+void Foam::newtonSolver::measureResiduals
+(
+    const nonlinearSystem& sys,
+    const Eigen::VectorXd& x,
+    const Eigen::VectorXd& xStart,
+    iterationState& s,
+    result& res
+) const
+{
+    s.forceScale = sys.forceScale();
+    res.forceResidual = relativeForceResidual(s.normR, s.forceScale);
+
+    const scalar increment =
+        max(gMaxNorm(x - xStart), 1e-6*sys.typicalDisplacement());
+    res.displacementResidual = s.dxCur/increment;
+    if (estimateError_ && s.fullLast && s.fullPrev && s.dxCur < s.dxPrev)
+    {
+        // [S16b] the error of this iterate from the observed contraction
+        // theta: |x - x*| <= theta/(1 - theta) |dx|
+        const scalar theta = s.dxCur/s.dxPrev;
+        res.displacementResidual *= min(1, theta/(1 - theta));
+    }
+}
+
+
+void Foam::newtonSolver::updateMultipliers
+(
+    nonlinearSystem& sys,
+    const Eigen::VectorXd& x,
+    const label it,
+    iterationState& s,
+    result& res
+)
+{
+    // [C5b] inexact Uzawa: near the solution the multipliers are updated
+    // at the iterate and Newton goes on from it with them (its next step
+    // absorbs the update, with maxNewtonIterations more); a solve
+    // converges only where they did not change
+    if (!sys.augment(x))
+    {
+        res.multipliersConverged = true;
+        return;
+    }
+    ++res.augmentations;
+    evaluate(sys, x, s.R);
+    s.normR = finiteNorm(s.R);
+    s.normRprev = s.normR;
+    s.restart(x, it);
+    s.itLimit = it + maxNewton_;
+    s.afterUpdate = true;
+    s.forceScale = sys.forceScale();
+    res.forceResidual = relativeForceResidual(s.normR, s.forceScale);
+    res.displacementResidual = GREAT;
+}
+
+
+bool Foam::newtonSolver::endsUnconverged
+(
+    nonlinearSystem& sys,
+    Eigen::VectorXd& x,
+    const label it,
+    iterationState& s,
+    result& res
+)
+{
+    const scalar bestResidual =
+        s.forceScale > 0 ? s.normBest/s.forceScale : 1;
+    // a solve that ends without converging returns its best iterate
+    const auto returnBest = [&]()
+    {
+        if (s.normBest < s.normR)
+        {
+            x = s.xBest;
+            evaluate(sys, x, s.R);
+            res.forceResidual = bestResidual;
+        }
+    };
+    const bool accept =
+        bestResidual <= acceptableForceTol_
+     && (it == s.itLimit || it - s.itBest >= stallIterations_);
+    if (accept || it == s.itLimit)
+    {
+        returnBest();
+        res.converged = accept;
+        res.accepted = accept;
+        if (!accept)
+        {
+            res.reason = "no convergence in maxNewtonIterations";
+        }
+        return true;
+    }
+    if
+    (
+        stallStopIterations_ > 0 && it - s.itBest >= stallStopIterations_
+     && bestResidual > stalledFarResidual
+    )
+    {
+        // [S14f] the best |R| has not fallen by 10 % in
+        // stallStopIterations iterations, far from the answer: the
+        // retries start now, not at itLimit
+        returnBest();
+        res.reason =
+            "stalled: |R| not 10 % below its best for "
+          + Foam::name(stallStopIterations_) + " iterations";
+        return true;
+    }
+    return false;
+}
+
+
+Foam::scalar Foam::newtonSolver::linearTolerance
+(
+    iterationState& s,
+    const scalar forceTol
+) const
+{
+    // Eisenstat-Walker forcing term (choice 2), no tighter than needed to
+    // reach the force tolerance; after a step that barely lowered |R| (an
+    // active set changing) the tightest, since a loose solve with an
+    // outdated preconditioner then misleads Newton further
+    scalar eta;
+    if (s.afterUpdate)
+    {
+        // [C5b] the update's correction is needed only to the accuracy of
+        // the next update (a fraction of it)
+        eta = augmentForcing_;
+        s.firstSolve = false;
+    }
+    else if (s.firstSolve)
+    {
+        eta = initialForcing_;
+        s.firstSolve = false;
+    }
+    else
+    {
+        const scalar ratio = s.normR/max(s.normRprev, VSMALL);
+        eta = ratio < 0.9 ? min(0.1, max(0.9*sqr(ratio), 1e-4)) : 1e-4;
+    }
+    return max(eta*s.normR, 0.1*forceTol*s.forceScale);
+}
+
+
+bool Foam::newtonSolver::chordStep
+(
+    const nonlinearSystem& sys,
+    const iterationState& s,
+    const result& res,
+    const scalar forceTol,
+    const scalar displacementTol,
+    bool& updateChord
+) const
+{
+    // [S16b] the force test is met and only the displacement test is
+    // left, in Newton's quadratic phase (the last correction below the
+    // square root of the tolerance: the next one about its square): the
+    // correction that decides the test is solved with the Jacobian and
+    // set-up of the last iteration. Once per solve (a chord step converges
+    // only linearly), and only with an iterative linear solver, whose
+    // correction differs from Newton's by its tolerance already (a direct
+    // solver's steps stay exact Newton steps)
+    const bool finalChord =
+        finalChordStep_ && !jacobianFree_ && s.haveJacobian && !s.chordTaken
+     && sys.inexactJacobianSolve()
+     && res.forceResidual <= forceTol
+     && res.displacementResidual <= Foam::sqrt(displacementTol);
+
+    // [C5b] the step that absorbs a multiplier update: the update leaves
+    // the Jacobian as it was (a constant shift of the penetration) and is
+    // made near the solution, where the last correction hardly changed
+    // it, so the Jacobian and set-up of the iteration before serve (a
+    // chord step, also with a direct solver)
+    updateChord = s.afterUpdate && s.haveJacobian && !jacobianFree_;
+    return finalChord || updateChord;
+}
+
+
+void Foam::newtonSolver::limitCorrection
+(
+    nonlinearSystem& sys,
+    const Eigen::VectorXd& x,
+    Eigen::VectorXd& dx,
+    result& res
+) const
+{
+    // A correction larger than 1 % of the body is not a Newton step but
+    // the answer of a (nearly) singular Jacobian: a body held only by
+    // contact that has just opened moves freely. It is scaled down, and
+    // the line search finds how far it may go
+    const scalar maxCorrection = 1e4*sys.typicalDisplacement();
+    const scalar dxMax = gMaxNorm(dx);
+    if (dxMax > maxCorrection)
+    {
+        dx *= maxCorrection/dxMax;
+    }
+
+    // [S14b] the step stops where a contact face that is open at x
+    // reaches its obstacle: past it the linearisation (no contact
+    // stiffness there) does not hold, and the full step would drive the
+    // face through the obstacle. 'always': here, before the line search;
+    // 'afterLineSearch' (default): only where no fraction of the step
+    // lowers |R| (faces that the step closes only a little, as the rings
+    // of a widening Hertz contact, then cost no stop each)
+    if (stopAtContactOnset_ == onsetStop::always)
+    {
+        const scalar onset = contactOnsetFraction(sys, x, dx);
+        if (onset < 1)
+        {
+            dx *= onset;
+            ++res.contactOnsetStops;
+        }
+    }
+}
+
+
+Foam::newtonLineSearch::outcome Foam::newtonSolver::searchLine
+(
+    nonlinearSystem& sys,
+    const Eigen::VectorXd& x,
+    iterationState& s,
+    result& res
+)
+{
+    const auto trial = [&](const scalar l)
+    {
+        s.xTrial = x + l*s.dx;
+        evaluate(sys, s.xTrial, s.Rtrial);
+        return finiteNorm(s.Rtrial);
+    };
+    const auto onset = [&]()
+    {
+        return contactOnsetFraction(sys, x, s.dx);
+    };
+    const newtonLineSearch::outcome out =
+        lineSearch_.search
+        (
+            s.normR,
+            lineSearch_.referenceNorm(s.recentNorms),
+            trial,
+            onset,
+            s.predicted
+        );
+    res.contactOnsetStops += out.onsetStop;
+    return out;
+}
+
+
+void Foam::newtonSolver::restartFromStart
+(
+    nonlinearSystem& sys,
+    Eigen::VectorXd& x,
+    const Eigen::VectorXd& xStart,
+    const label it,
+    iterationState& s,
+    result& res
+)
+{
+    // [S16b] the predictor lies across an active-set switch: no fraction
+    // of the step from it helps; restart from the last converged state
+    // (this iteration counts)
+    if (verbose_)
+    {
+        Info<< "        " << s.lastKrylov << " linear iterations, no"
+            << " decrease from the predictor: restart from the last"
+            << " converged state" << endl;
+    }
+    s.predicted = false;
+    res.predictorRejected = true;
+    x = xStart;
+    evaluate(sys, x, s.R);
+    s.normRprev = s.normR;
+    s.normR = finiteNorm(s.R);
+    s.restart(x, it + 1);
+    s.dx.setZero();
+    s.haveJacobian = false;
+    s.lastKrylov = -1;
+}
+
+
+void Foam::newtonSolver::takeStep
+(
+    Eigen::VectorXd& x,
+    const label it,
+    const bool chord,
+    const newtonLineSearch::outcome& ls,
+    iterationState& s
+) const
+{
+    if (verbose_)
+    {
+        Info<< "        " << s.lastKrylov << " linear iterations, step "
+            << ls.lambda << (ls.decreased ? "" : " (no decrease)") << endl;
+    }
+
+    s.dx *= ls.lambda;
+    s.dxPrev = s.dxCur;
+    s.dxCur = gMaxNorm(s.dx);
+    s.fullPrev = s.fullLast;
+    // (a chord step's contraction is not Newton's: no estimate from it)
+    s.fullLast = ls.decreased && ls.lambda == 1 && !chord;
+    x = s.xTrial;
+    s.R = s.Rtrial;
+    s.normRprev = s.normR;
+    s.normR = ls.norm;
+    s.recentNorms.append(s.normR);
+    if (s.normR < s.normBest)
+    {
+        if (s.normR < 0.9*s.normBest)
+        {
+            s.itBest = it + 1;
+        }
+        s.normBest = s.normR;
+        s.xBest = x;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::newtonSolver::result Foam::newtonSolver::solve
@@ -482,112 +813,40 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
      || method_ == method::jacobianFree
      || sys.approximateJacobianSolve();
 
-    Eigen::VectorXd R(x.size()), Rtrial(x.size()), dx(x.size());
-    Eigen::VectorXd xTrial(x.size()), xFull(x.size()), Rfull(x.size());
-    scalar normFull = GREAT;
-
-    evaluate(sys, x, R);
-    scalar normR = gNorm(R);
-    scalar normRprev = normR;
-
-    // The best iterate: a step that stalls returns it rather than the last
-    // one (which the non-monotone line search may have made worse)
-    Eigen::VectorXd xBest(x);
-    scalar normBest = normR;
-    // [S14d] the residual norms since the start or the last reset (a
-    // multiplier update, a restart): the line search's reference is the
-    // largest of the last lineSearchMemory of them
-    DynamicList<scalar> recentNorms(1, normR);
-    label itBest = 0;
-    scalar eta = 1e-2;
-    label lastKrylov = -1;
-
+    iterationState s(x.size());
+    evaluate(sys, x, s.R);
+    s.normR = gNorm(s.R);
+    s.normRprev = s.normR;
+    s.restart(x, 0);
+    s.itLimit = maxNewton_;
     // [S16b] was the initial guess extrapolated (a predictor)?
-    bool predicted = rejectPredictor_ && gMaxNorm(x - xStart) > 0;
+    s.predicted = rejectPredictor_ && gMaxNorm(x - xStart) > 0;
 
-    // The last two corrections' sizes (0: none yet) and whether they were
-    // full steps, for the displacement test and its error estimate
-    scalar dxPrev = 0;
-    scalar dxCur = 0;
-    bool fullPrev = false;
-    bool firstSolve = true;
-    // [C5b] the next step absorbs a multiplier update
-    bool afterUpdate = false;
-    bool fullLast = false;
-
-    // [S16b] a Jacobian of this solve is in place; a chord step taken
-    bool haveJacobian = false;
-    bool chordTaken = false;
-
-    // [C5b] multipliers updated between the iterations; every update
-    // gives the solve maxNewtonIterations more
+    // [C5b] multipliers updated between the iterations
     const bool augmenting = augmentInside_ && sys.augmentable();
-    label itLimit = maxNewton_;
 
-    for (label it = 0; it <= itLimit; ++it)
+    for (label it = 0; it <= s.itLimit; ++it)
     {
-        if (!gFinite(R))
+        if (!gFinite(s.R))
         {
             res.reason = "residual is not finite";
             break;
         }
 
-        scalar Fscale = sys.forceScale();
-        res.forceResidual = Fscale > 0 ? normR/Fscale : (normR > 0 ? 1 : 0);
-
-        const scalar increment =
-            max(gMaxNorm(x - xStart), 1e-6*sys.typicalDisplacement());
-        res.displacementResidual = dxCur/increment;
-        if (estimateError_ && fullLast && fullPrev && dxCur < dxPrev)
-        {
-            // [S16b] the error of this iterate from the observed
-            // contraction theta: |x - x*| <= theta/(1 - theta) |dx|
-            const scalar theta = dxCur/dxPrev;
-            res.displacementResidual *= min(1, theta/(1 - theta));
-        }
-
+        measureResiduals(sys, x, xStart, s, res);
         if (verbose_)
         {
             Info<< "    Newton " << it << ": force residual "
                 << res.forceResidual << ", displacement correction "
                 << res.displacementResidual << endl;
             Info<< "        largest residual "
-                << largestResidual(sys, R).c_str() << endl;
+                << largestResidual(sys, s.R).c_str() << endl;
         }
 
-        // [C5b] inexact Uzawa: near the solution the multipliers are
-        // updated at the iterate and Newton goes on from it with them (its
-        // next step absorbs the update); a solve converges only where they
-        // did not change
         res.multipliersConverged = false;
         if (augmenting && res.forceResidual <= augmentForceFactor_*forceTol)
         {
-            if (sys.augment(x))
-            {
-                ++res.augmentations;
-                evaluate(sys, x, R);
-                normR = finiteNorm(R);
-                normRprev = normR;
-                recentNorms.clear();
-                recentNorms.append(normR);
-                xBest = x;
-                normBest = normR;
-                itBest = it;
-                itLimit = it + maxNewton_;
-                dxPrev = dxCur = 0;
-                fullPrev = fullLast = false;
-                firstSolve = true;
-                chordTaken = false;
-                afterUpdate = true;
-                Fscale = sys.forceScale();
-                res.forceResidual =
-                    Fscale > 0 ? normR/Fscale : (normR > 0 ? 1 : 0);
-                res.displacementResidual = GREAT;
-            }
-            else
-            {
-                res.multipliersConverged = true;
-            }
+            updateMultipliers(sys, x, it, s, res);
         }
 
         if
@@ -600,291 +859,40 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
             break;
         }
         res.multipliersConverged = false;
-        const scalar bestResidual = Fscale > 0 ? normBest/Fscale : 1;
-        // a solve that ends without converging returns its best iterate
-        const auto returnBest = [&]()
+        if (endsUnconverged(sys, x, it, s, res))
         {
-            if (normBest < normR)
-            {
-                x = xBest;
-                evaluate(sys, x, R);
-                res.forceResidual = bestResidual;
-            }
-        };
-        const bool accept =
-            bestResidual <= acceptableForceTol_
-         && (it == itLimit || it - itBest >= stallIterations_);
-        if (accept || it == itLimit)
-        {
-            returnBest();
-            res.converged = accept;
-            res.accepted = accept;
-            if (!accept)
-            {
-                res.reason = "no convergence in maxNewtonIterations";
-            }
-            break;
-        }
-        if
-        (
-            stallStopIterations_ > 0 && it - itBest >= stallStopIterations_
-         && bestResidual > stalledFarResidual
-        )
-        {
-            // [S14f] the best |R| has not fallen by 10 % in
-            // stallStopIterations iterations, far from the answer: the
-            // retries start now, not at itLimit
-            returnBest();
-            res.reason =
-                "stalled: |R| not 10 % below its best for "
-              + Foam::name(stallStopIterations_) + " iterations";
             break;
         }
 
-        // Eisenstat-Walker forcing term (choice 2), no tighter than needed
-        // to reach the force tolerance; after a step that barely lowered
-        // |R| (an active set changing) the tightest, since a loose solve
-        // with an outdated preconditioner then misleads Newton further
-        if (afterUpdate)
-        {
-            // [C5b] the update's correction is needed only to the
-            // accuracy of the next update (a fraction of it)
-            eta = augmentForcing_;
-            firstSolve = false;
-        }
-        else if (firstSolve)
-        {
-            eta = initialForcing_;
-            firstSolve = false;
-        }
-        else
-        {
-            const scalar ratio = normR/max(normRprev, VSMALL);
-            eta = ratio < 0.9 ? min(0.1, max(0.9*sqr(ratio), 1e-4)) : 1e-4;
-        }
-        const scalar linTol = max(eta*normR, 0.1*forceTol*Fscale);
-
-        // [S16b] the force test is met and only the displacement test is
-        // left, in Newton's quadratic phase (the last correction below
-        // the square root of the tolerance: the next one about its
-        // square): the correction that decides the test is solved with
-        // the Jacobian and set-up of the last iteration. Once per solve
-        // (a chord step converges only linearly), and only with an
-        // iterative linear solver, whose correction differs from
-        // Newton's by its tolerance already (a direct solver's steps stay
-        // exact Newton steps)
+        const scalar linTol = linearTolerance(s, forceTol);
+        bool updateChord = false;
         bool chord =
-            finalChordStep_ && !jacobianFree_ && haveJacobian && !chordTaken
-         && sys.inexactJacobianSolve()
-         && res.forceResidual <= forceTol
-         && res.displacementResidual <= Foam::sqrt(displacementTol);
-        // [C5b] the step that absorbs a multiplier update: the update
-        // leaves the Jacobian as it was (a constant shift of the
-        // penetration) and is made near the solution, where the last
-        // correction hardly changed it, so the Jacobian and set-up of the
-        // iteration before serve (a chord step, also with a direct solver)
-        const bool updateChord = afterUpdate && haveJacobian && !jacobianFree_;
-        chord = chord || updateChord;
-        afterUpdate = false;
-        if (!step(sys, x, R, linTol, it, chord, lastKrylov, dx, res))
+            chordStep(sys, s, res, forceTol, displacementTol, updateChord);
+        s.afterUpdate = false;
+        if (!step(sys, x, s.R, linTol, it, chord, s.lastKrylov, s.dx, res))
         {
             break;
         }
-        haveJacobian = true;
-        chordTaken = chordTaken || (chord && !updateChord);
+        s.haveJacobian = true;
+        s.chordTaken = s.chordTaken || (chord && !updateChord);
         res.chordSteps += chord;
-        res.krylovIterations += lastKrylov;
+        res.krylovIterations += s.lastKrylov;
         ++res.newtonIterations;
 
-        // A correction larger than 1 % of the body is not a Newton step
-        // but the answer of a (nearly) singular Jacobian: a body held only
-        // by contact that has just opened moves freely. It is scaled down,
-        // and the line search below finds how far it may go
-        const scalar maxCorrection = 1e4*sys.typicalDisplacement();
-        const scalar dxMax = gMaxNorm(dx);
-        if (dxMax > maxCorrection)
+        limitCorrection(sys, x, s.dx, res);
+        const newtonLineSearch::outcome ls = searchLine(sys, x, s, res);
+        if (ls.rejectPredictor)
         {
-            dx *= maxCorrection/dxMax;
-        }
-
-        // [S14b] the step stops where a contact face that is open at x
-        // reaches its obstacle: past it the linearisation (no contact
-        // stiffness there) does not hold, and the full step would drive
-        // the face through the obstacle. 'always': before the line search;
-        // 'afterLineSearch' (default): only where no fraction of the step
-        // lowers |R| (faces that the step closes only a little, as the
-        // rings of a widening Hertz contact, then cost no stop each)
-        if (stopAtContactOnset_ == onsetStop::always)
-        {
-            const scalar onset = contactOnsetFraction(sys, x, dx);
-            if (onset < 1)
-            {
-                dx *= onset;
-                ++res.contactOnsetStops;
-            }
-        }
-
-        // Backtracking line search on |R| (Armijo). When no fraction of
-        // the step lowers |R| enough (an active-set change: faces closing
-        // into stiff contact make the residual jump before it falls), the
-        // largest fraction that does not raise |R| is taken (a free body
-        // moving towards its support), else the smallest one, or the full
-        // step with fullStepFallback
-        scalar normRef = 0;
-        for
-        (
-            label k = max(recentNorms.size() - lineSearchMemory_, 0);
-            k < recentNorms.size();
-            ++k
-        )
-        {
-            normRef = max(normRef, recentNorms[k]);
-        }
-        // |R| at x + l dx (xTrial, Rtrial hold it), and Armijo's test
-        const auto tryStep = [&](const scalar l)
-        {
-            xTrial = x + l*dx;
-            evaluate(sys, xTrial, Rtrial);
-            return finiteNorm(Rtrial);
-        };
-        const auto sufficient = [&](const scalar norm, const scalar l)
-        {
-            return norm <= (1 - 1e-4*l)*normRef;
-        };
-        scalar lambda = 1;
-        scalar normTrial = GREAT;
-        bool decreased = false;
-        scalar lambdaFlat = -1;
-        const label nTrials = 6;    // fractions 1, 1/2, ..., 1/32
-        for (label ls = 0; ls < nTrials; ++ls)
-        {
-            normTrial = tryStep(lambda);
-            if (ls == 0)
-            {
-                xFull = xTrial;
-                Rfull = Rtrial;
-                normFull = normTrial;
-            }
-            if (sufficient(normTrial, lambda))
-            {
-                decreased = true;
-                break;
-            }
-            if (lambdaFlat < 0 && normTrial <= normR)
-            {
-                lambdaFlat = lambda;
-            }
-            if (ls < nTrials - 1)
-            {
-                // (the last fraction tried stays in lambda: it is the one
-                // taken when none decreases |R|)
-                lambda *= 0.5;
-            }
-        }
-        const scalar onset =
-            !decreased && stopAtContactOnset_ == onsetStop::afterLineSearch
-          ? contactOnsetFraction(sys, x, dx)
-          : 1;
-        if (onset < 1)
-        {
-            // [S14b] no fraction of the step lowers |R|: the fractions of
-            // the step to the first contact onset along it are tried
-            const scalar lambdaSmallest = lambda;
-            lambda = onset;
-            for (label ls = 0; ls < nOnsetTrials && !decreased; ++ls)
-            {
-                normTrial = tryStep(lambda);
-                decreased = sufficient(normTrial, lambda);
-                if (!decreased)
-                {
-                    lambda *= 0.5;
-                }
-            }
-            res.contactOnsetStops += decreased;
-            if (!decreased && lambdaFlat < 0 && !fullStepFallback_)
-            {
-                // none did: the smallest fraction, as without the stop
-                lambda = lambdaSmallest;
-                normTrial = tryStep(lambda);
-            }
-        }
-        if (!decreased && predicted)
-        {
-            // [S16b] the predictor lies across an active-set switch: no
-            // fraction of the step from it helps; restart from the last
-            // converged state (this iteration counts)
-            if (verbose_)
-            {
-                Info<< "        " << lastKrylov << " linear iterations, no"
-                    << " decrease from the predictor: restart from the last"
-                    << " converged state" << endl;
-            }
-            predicted = false;
-            res.predictorRejected = true;
-            x = xStart;
-            evaluate(sys, x, R);
-            normRprev = normR;
-            normR = finiteNorm(R);
-            recentNorms.clear();
-            recentNorms.append(normR);
-            xBest = x;
-            normBest = normR;
-            itBest = it + 1;
-            dx.setZero();
-            haveJacobian = chordTaken = false;
-            dxPrev = dxCur = 0;
-            fullPrev = fullLast = false;
-            firstSolve = true;
-            lastKrylov = -1;
+            restartFromStart(sys, x, xStart, it, s, res);
             continue;
         }
-        predicted = false;
-        if (!decreased && normFull < GREAT && fullStepFallback_)
-        {
-            lambda = 1;
-            xTrial = xFull;
-            Rtrial = Rfull;
-            normTrial = normFull;
-            // the system's fields must hold the accepted iterate
-            evaluate(sys, xTrial, Rtrial);
-        }
-        else if (!decreased && lambdaFlat > 0)
-        {
-            lambda = lambdaFlat;
-            normTrial = tryStep(lambda);
-        }
-        if (normTrial >= GREAT)
+        s.predicted = false;
+        if (ls.norm >= GREAT)
         {
             res.reason = "residual is not finite after the line search";
             break;
         }
-
-        if (verbose_)
-        {
-            Info<< "        " << lastKrylov << " linear iterations, step "
-                << lambda << (decreased ? "" : " (no decrease)") << endl;
-        }
-
-        dx *= lambda;
-        dxPrev = dxCur;
-        dxCur = gMaxNorm(dx);
-        fullPrev = fullLast;
-        // (a chord step's contraction is not Newton's: no estimate from it)
-        fullLast = decreased && lambda == 1 && !chord;
-        x = xTrial;
-        R = Rtrial;
-        normRprev = normR;
-        normR = normTrial;
-        recentNorms.append(normR);
-        if (normR < normBest)
-        {
-            if (normR < 0.9*normBest)
-            {
-                itBest = it + 1;
-            }
-            normBest = normR;
-            xBest = x;
-        }
+        takeStep(x, it, chord, ls, s);
     }
 
     res.residualEvaluations = nResidualEvaluations_;
