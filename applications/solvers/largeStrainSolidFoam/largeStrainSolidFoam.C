@@ -38,7 +38,7 @@ Description
 #include "newtonSolver.H"
 #include "timeStepController.H"
 #include "solidRestartState.H"
-#include "OFstream.H"
+#include "solverPerformanceFile.H"
 #include "clockTime.H"
 #include "writeSchedule.H"
 #include "keepFreedMemory.H"
@@ -133,6 +133,114 @@ newtonSolver::result continueWithWiderOnset
     return res;
 }
 
+
+
+//- [C5b] Augmented Lagrangian contact with augmentBetweenIterations no:
+//  the converged step is solved again, from where it stands, with the
+//  contacts' updated multipliers until their penetrations are below their
+//  tolerances (with the default the Newton solver updates them between
+//  its iterations and returns them converged; no contact augmented: no
+//  re-solve). A solve after an update is followed by another check and
+//  most likely another update, so it stops at looser tolerances (1000
+//  times the controls'); when the multipliers have converged at such an
+//  iterate, a last solve to the controls' tolerances (and another check)
+//  follows. Every solve's Newton iterations are added to nNewton
+void augmentBetweenSolves
+(
+    totalLagrangianSolid& solid,
+    newtonSolver& nonlinearSolver,
+    Eigen::VectorXd& x,
+    const Eigen::VectorXd& xStart,
+    const bool jacobianFree,
+    newtonSolver::result& res,
+    label& nNewton
+)
+{
+    bool loose = false;
+    for (label aug = 1; res.converged && !res.multipliersConverged; ++aug)
+    {
+        const bool update = solid.augment(x);
+        if (!update && !loose)
+        {
+            break;
+        }
+        loose = update;
+        const label krylov = res.krylovIterations;
+        const label evaluations = res.residualEvaluations;
+        res = nonlinearSolver.solve
+        (
+            solid, x, xStart, jacobianFree, loose ? 1e3 : 1
+        );
+        nNewton += res.newtonIterations;
+        res.krylovIterations += krylov;
+        res.residualEvaluations += evaluations;
+        Info<< "    augmentation " << aug << ": "
+            << res.newtonIterations << " Newton iterations"
+            << (loose ? " (loose tolerances)" : " (final solve)")
+            << (res.converged ? "" : ", not converged") << endl;
+    }
+}
+
+
+//- One load step at the step size Time holds, attempted until the
+//  controller stops retrying: the exact-Jacobian Newton from the
+//  predictor, its continuation retry [S14e], then the Jacobian-free retry
+//  from the last solution (a bounded correction where the exact Jacobian
+//  is singular) [S18]. Returns the last solve's result with the Newton
+//  iterations of every solve; action: the controller's verdict
+newtonSolver::result solveLoadStep
+(
+    totalLagrangianSolid& solid,
+    newtonSolver& nonlinearSolver,
+    timeStepController& controller,
+    const Time& runTime,
+    Eigen::VectorXd& x,
+    Eigen::VectorXd& xStart,
+    label& nContinuationFailures,
+    timeStepController::action& action
+)
+{
+    newtonSolver::result res;
+    label nNewton = 0;
+    action = timeStepController::RETRY;
+    bool retry = false;
+    while (action == timeStepController::RETRY)
+    {
+        solid.beginStep(x, xStart, controller.predict());
+        res = nonlinearSolver.solve(solid, x, xStart, retry);
+        nNewton += res.newtonIterations;
+        if (!res.converged && !retry)
+        {
+            res = continueWithWiderOnset
+            (
+                solid, nonlinearSolver, x, xStart, controller.predict(),
+                res, nNewton, nContinuationFailures
+            );
+        }
+        augmentBetweenSolves
+        (
+            solid, nonlinearSolver, x, xStart, retry, res, nNewton
+        );
+
+        action =
+            res.converged
+          ? controller.converged()
+          : controller.failed(runTime.deltaTValue());
+        retry = action == timeStepController::RETRY;
+        if (retry)
+        {
+            // The last resort before a cut-back: say what failed
+            Info<< "    retrying the step without the predictor,"
+                << " Jacobian-free: the exact-Jacobian Newton stopped ("
+                << res.reason.c_str() << ") after " << res.newtonIterations
+                << " iterations, force residual " << res.forceResidual
+                << endl;
+        }
+    }
+    res.newtonIterations = nNewton;
+    return res;
+}
+
 } // End namespace Foam
 
 
@@ -175,29 +283,7 @@ int main(int argc, char *argv[])
     label nContinuationFailures =
         restartState.lookupOrDefault<label>("continuationFailures", 0);
 
-    autoPtr<OFstream> perfFile;
-    if (Pstream::master())
-    {
-        mkDir(runTime.globalPath()/"postProcessing");
-        perfFile.reset
-        (
-            new OFstream
-            (
-                runTime.globalPath()/"postProcessing"/"solverPerformance.dat",
-                IOstream::ASCII, IOstream::currentVersion,
-                IOstream::UNCOMPRESSED, true
-            )
-        );
-        if (!perfFile().good())
-        {
-            FatalErrorInFunction
-                << "Cannot write " << perfFile().name() << " (is the case"
-                << " folder writable?)" << nl << exit(FatalError);
-        }
-        perfFile()
-            << "# time deltaT newtonIterations krylovIterations"
-            << " residualEvaluations forceResidual cutBacks wallTime" << nl;
-    }
+    solverPerformanceFile performance(runTime);
 
     // Write the last converged state with what a restart needs [S19],
     // the restart record last: it marks the directory complete [S19b]
@@ -233,85 +319,14 @@ int main(int argc, char *argv[])
 
         stepClock.timeIncrement();
 
-        newtonSolver::result res;
-        label nNewton = 0;
-        timeStepController::action action = timeStepController::RETRY;
         const label nCutBacks = controller.nFailures();
-        bool retry = false;
-        while (action == timeStepController::RETRY)
-        {
-            // the retry of a failed attempt: from the last solution,
-            // Jacobian-free (a bounded correction where the exact Jacobian
-            // is singular)
-            solid.beginStep(x, xStart, controller.predict());
-            res = nonlinearSolver.solve(solid, x, xStart, retry);
-            nNewton += res.newtonIterations;
-            if (!res.converged && !retry)
-            {
-                res = continueWithWiderOnset
-                (
-                    solid, nonlinearSolver, x, xStart, controller.predict(),
-                    res, nNewton, nContinuationFailures
-                );
-            }
-
-            // [C5b] augmented Lagrangian contact: the Newton solver
-            // updates the multipliers between its iterations and returns
-            // converged multipliers (augmentBetweenIterations, the
-            // default). Otherwise the converged step is
-            // solved again, from where it stands, with the contacts'
-            // updated multipliers until their penetrations are below their
-            // tolerances (no contact augmented: no re-solve). A solve
-            // after an update is followed by another check and most likely
-            // another update, so it stops at looser tolerances (1000
-            // times the controls'); when the multipliers have converged
-            // at such an iterate, a last solve to the controls' tolerances
-            // (and another check) follows
-            bool loose = false;
-            for
+        timeStepController::action action;
+        const newtonSolver::result res =
+            solveLoadStep
             (
-                label aug = 1;
-                res.converged && !res.multipliersConverged;
-                ++aug
-            )
-            {
-                const bool update = solid.augment(x);
-                if (!update && !loose)
-                {
-                    break;
-                }
-                loose = update;
-                const label krylov = res.krylovIterations;
-                const label evaluations = res.residualEvaluations;
-                res = nonlinearSolver.solve
-                (
-                    solid, x, xStart, retry, loose ? 1e3 : 1
-                );
-                nNewton += res.newtonIterations;
-                res.krylovIterations += krylov;
-                res.residualEvaluations += evaluations;
-                Info<< "    augmentation " << aug << ": "
-                    << res.newtonIterations << " Newton iterations"
-                    << (loose ? " (loose tolerances)" : " (final solve)")
-                    << (res.converged ? "" : ", not converged") << endl;
-            }
-
-            action =
-                res.converged
-              ? controller.converged()
-              : controller.failed(runTime.deltaTValue());
-            retry = action == timeStepController::RETRY;
-            if (retry)
-            {
-                // The last resort before a cut-back: say what failed
-                Info<< "    retrying the step without the predictor,"
-                    << " Jacobian-free: the exact-Jacobian Newton stopped ("
-                    << res.reason.c_str() << ") after " << res.newtonIterations
-                    << " iterations, force residual " << res.forceResidual
-                    << endl;
-            }
-        }
-        res.newtonIterations = nNewton;
+                solid, nonlinearSolver, controller, runTime, x, xStart,
+                nContinuationFailures, action
+            );
 
         if (res.accepted)
         {
@@ -368,14 +383,7 @@ int main(int argc, char *argv[])
             << " residual evaluations, force residual " << res.forceResidual
             << ", " << stepTime << " s" << endl;
 
-        if (perfFile.valid())
-        {
-            perfFile()
-                << runTime.value() << ' ' << runTime.deltaTValue() << ' '
-                << res.newtonIterations << ' ' << res.krylovIterations << ' '
-                << res.residualEvaluations << ' ' << res.forceResidual << ' '
-                << nCutBacks << ' ' << runTime.elapsedCpuTime() << endl;
-        }
+        performance.write(res, nCutBacks);
 
         if (writes.due(t0))
         {
