@@ -11,7 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "newtonLineSearch.H"
-#include "error.H"
+#include "boundedEntry.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -46,19 +46,18 @@ Foam::newtonLineSearch::newtonLineSearch
     const bool onsetAfterSearch
 )
 :
-    memory_(dict.lookupOrDefault<label>("lineSearchMemory", 1)),
+    memory_
+    (
+        strictDictionary::readBounded<label>
+        (
+            dict, "lineSearchMemory", 1,
+            [](const label m) { return m >= 1; },
+            "an integer >= 1 (1: |R| must fall at every iteration)"
+        )
+    ),
     fullStepFallback_(dict.lookupOrDefault<bool>("fullStepFallback", false)),
     onsetAfterSearch_(onsetAfterSearch)
-{
-    if (memory_ < 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword 'lineSearchMemory' in dictionary " << dict.name()
-            << " is " << memory_ << "; expected an integer >= 1"
-            << " (1: |R| must fall at every iteration)" << nl
-            << exit(FatalIOError);
-    }
-}
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -15,6 +15,7 @@ License
 #include "cpuTime.H"
 #include "OStringStream.H"
 #include "processorPlace.H"
+#include "boundedEntry.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -43,6 +44,8 @@ Foam::newtonSolver::onsetStopNames
 namespace Foam
 {
 
+using strictDictionary::readBounded;
+
 //- [S14b] The smallest fraction of a step kept when it stops at a contact
 //  onset: a face just short of its onset does not stall the solve
 static const scalar minOnsetFraction = 1e-2;
@@ -51,6 +54,13 @@ static const scalar minOnsetFraction = 1e-2;
 //  below it Newton is near the answer, where faces cycling between
 //  stick and slip may still settle (the ironing's steps at 1e-7-1e-6)
 static const scalar stalledFarResidual = 1e-4;
+
+// The ranges of the controls (strictDictionary::readBounded)
+static bool positive(const scalar& x) { return x > 0; }
+static bool nonNegative(const scalar& x) { return x >= 0; }
+static bool inUnitInterval(const scalar& x) { return x > 0 && x < 1; }
+static bool atLeastOne(const label& n) { return n >= 1; }
+static bool nonNegativeCount(const label& n) { return n >= 0; }
 
 //- |R|, or GREAT where R is not finite (a trial the line search rejects)
 static scalar finiteNorm(const Eigen::VectorXd& R)
@@ -115,24 +125,60 @@ static newtonSolver::onsetStop readOnsetStop(const dictionary& dict)
 Foam::newtonSolver::newtonSolver(const dictionary& dict)
 :
     method_(readMethod(dict)),
-    forceTol_(dict.lookupOrDefault<scalar>("forceTolerance", 1e-7)),
+    forceTol_
+    (
+        readBounded<scalar>
+        (
+            dict, "forceTolerance", 1e-7, positive, "a value > 0"
+        )
+    ),
     acceptableForceTol_
     (
-        dict.lookupOrDefault<scalar>("acceptableForceTolerance", 0)
+        readBounded<scalar>
+        (
+            dict, "acceptableForceTolerance", 0, nonNegative,
+            "a value >= 0 (0: off)"
+        )
     ),
-    stallIterations_(dict.lookupOrDefault<label>("stallIterations", 8)),
+    stallIterations_
+    (
+        readBounded<label>
+        (
+            dict, "stallIterations", 8, atLeastOne, "an integer >= 1"
+        )
+    ),
     stallStopIterations_
     (
-        dict.lookupOrDefault<label>("stallStopIterations", 0)
+        readBounded<label>
+        (
+            dict, "stallStopIterations", 0, nonNegativeCount,
+            "an integer >= 0 (0: off)"
+        )
     ),
     displacementTol_
     (
-        dict.lookupOrDefault<scalar>("displacementTolerance", 1e-7)
+        readBounded<scalar>
+        (
+            dict, "displacementTolerance", 1e-7, positive, "a value > 0"
+        )
     ),
-    maxNewton_(dict.lookupOrDefault<label>("maxNewtonIterations", 25)),
+    maxNewton_
+    (
+        readBounded<label>
+        (
+            dict, "maxNewtonIterations", 25, atLeastOne, "an integer >= 1"
+        )
+    ),
     verbose_(dict.lookupOrDefault<bool>("verbose", false)),
     rejectPredictor_(dict.lookupOrDefault<bool>("rejectPredictor", false)),
-    initialForcing_(dict.lookupOrDefault<scalar>("initialForcingTerm", 1e-4)),
+    initialForcing_
+    (
+        readBounded<scalar>
+        (
+            dict, "initialForcingTerm", 1e-4, inUnitInterval,
+            "a value in (0, 1)"
+        )
+    ),
     finalChordStep_(dict.lookupOrDefault<bool>("finalChordStep", true)),
     estimateError_(readDisplacementTest(dict)),
     holdLinearisation_
@@ -140,23 +186,51 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
         dict.lookupOrDefault<bool>("holdContactLinearisation", true)
     ),
     stopAtContactOnset_(readOnsetStop(dict)),
-    contactLookAhead_(dict.lookupOrDefault<label>("contactLookAhead", 0)),
+    contactLookAhead_
+    (
+        readBounded<label>
+        (
+            dict, "contactLookAhead", 0, nonNegativeCount,
+            "a number of linear solves >= 0 (0: off)"
+        )
+    ),
     onsetContinuation_
     (
-        dict.lookupOrDefault<scalar>("onsetContinuation", 10)
+        readBounded<scalar>
+        (
+            dict, "onsetContinuation", 10,
+            [](const scalar f) { return f >= 1 && std::isfinite(f); },
+            "a factor >= 1 (1: off)"
+        )
     ),
-    krylovRefresh_(dict.lookupOrDefault<label>("krylovRefresh", 15)),
+    krylovRefresh_
+    (
+        readBounded<label>
+        (
+            dict, "krylovRefresh", 15, nonNegativeCount, "an integer >= 0"
+        )
+    ),
     augmentInside_
     (
         dict.lookupOrDefault<bool>("augmentBetweenIterations", true)
     ),
     augmentForceFactor_
     (
-        dict.lookupOrDefault<scalar>("augmentForceFactor", 1e4)
+        readBounded<scalar>
+        (
+            dict, "augmentForceFactor", 1e4,
+            [](const scalar f) { return f >= 1; },
+            "a value >= 1 (the multipliers are updated once |R|/|F| is"
+            " below it times forceTolerance)"
+        )
     ),
     augmentForcing_
     (
-        dict.lookupOrDefault<scalar>("augmentForcingTerm", 1e-3)
+        readBounded<scalar>
+        (
+            dict, "augmentForcingTerm", 1e-3, inUnitInterval,
+            "a value in (0, 1)"
+        )
     ),
     gmres_(dict),
     lineSearch_(dict, stopAtContactOnset_ == onsetStop::afterLineSearch),
@@ -173,64 +247,6 @@ Foam::newtonSolver::newtonSolver(const dictionary& dict)
             << " 'newtonMethod jacobianFree;' and the linear solver with"
             << " 'linearSolver { type eigenLU; }'" << nl
             << exit(FatalIOError);
-    }
-    if (!(forceTol_ > 0) || !(displacementTol_ > 0) || maxNewton_ < 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Dictionary " << dict.name() << ": expected forceTolerance > 0"
-            << " (got " << forceTol_ << "), displacementTolerance > 0 (got "
-            << displacementTol_ << ") and maxNewtonIterations >= 1 (got "
-            << maxNewton_ << ")" << nl << exit(FatalIOError);
-    }
-    if (!(initialForcing_ > 0) || initialForcing_ >= 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword 'initialForcingTerm' in dictionary " << dict.name()
-            << " is " << initialForcing_ << "; expected a value in (0, 1)"
-            << nl << exit(FatalIOError);
-    }
-    if (!(augmentForcing_ > 0) || augmentForcing_ >= 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword 'augmentForcingTerm' in dictionary " << dict.name()
-            << " is " << augmentForcing_ << "; expected a value in (0, 1)"
-            << nl << exit(FatalIOError);
-    }
-    if (!(augmentForceFactor_ >= 1))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword 'augmentForceFactor' in dictionary " << dict.name()
-            << " is " << augmentForceFactor_ << "; expected a value >= 1"
-            << " (the multipliers are updated once |R|/|F| is below it"
-            << " times forceTolerance)" << nl << exit(FatalIOError);
-    }
-    if (!(onsetContinuation_ >= 1) || !std::isfinite(onsetContinuation_))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword 'onsetContinuation' in dictionary " << dict.name()
-            << " is " << onsetContinuation_ << "; expected a factor >= 1"
-            << " (1: off)" << nl << exit(FatalIOError);
-    }
-    if (contactLookAhead_ < 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword 'contactLookAhead' in dictionary " << dict.name()
-            << " is " << contactLookAhead_ << "; expected a number of"
-            << " linear solves >= 0 (0: off)" << nl << exit(FatalIOError);
-    }
-    if
-    (
-        acceptableForceTol_ < 0 || stallIterations_ < 1
-     || stallStopIterations_ < 0 || krylovRefresh_ < 0
-    )
-    {
-        FatalIOErrorInFunction(dict)
-            << "Dictionary " << dict.name() << ": expected"
-            << " acceptableForceTolerance >= 0 (got " << acceptableForceTol_
-            << "), stallIterations >= 1 (got " << stallIterations_
-            << "), stallStopIterations >= 0 (got " << stallStopIterations_
-            << ") and krylovRefresh >= 0 (got " << krylovRefresh_ << ")"
-            << nl << exit(FatalIOError);
     }
 }
 
