@@ -308,6 +308,100 @@ Foam::scalar Foam::newtonSolver::contactOnsetFraction
 }
 
 
+bool Foam::newtonSolver::lookAhead
+(
+    nonlinearSystem& sys,
+    const Eigen::VectorXd& x,
+    const scalar linTol,
+    Eigen::VectorXd& dx,
+    linearSolver::performance& perf,
+    result& res
+)
+{
+    // [S14c] contact faces open at x that the correction closes are not
+    // in this Jacobian: the correction carries them deep into their
+    // obstacles. Solve again with them on the penalty's line through
+    // their gaps (residual and Jacobian at x), until the correction closes
+    // no other face
+    label nLookAhead = 0;
+    Eigen::VectorXd Rp(x.size());
+    while
+    (
+        nLookAhead < contactLookAhead_
+     && sys.predictContacts(x, dx) > 0
+    )
+    {
+        ++nLookAhead;
+        evaluate(sys, x, Rp);
+        if (!sys.updateJacobian(x))
+        {
+            sys.clearPredictedContacts();
+            res.reason = sys.failure();
+            return false;
+        }
+        dx.setZero(x.size());
+        const scalar normRp = gNorm(Rp);
+        perf =
+            sys.solveJacobian
+            (
+                Rp, dx, normRp > 0 ? min(linTol/normRp, 0.1) : 0.1
+            );
+        if (!gFinite(dx))
+        {
+            break;
+        }
+    }
+    if (nLookAhead > 0)
+    {
+        sys.clearPredictedContacts();
+        res.contactLookAheadSolves += nLookAhead;
+        if (verbose_)
+        {
+            Info<< "        " << nLookAhead << " look-ahead solves"
+                << " with the faces the step closes" << endl;
+        }
+    }
+    return true;
+}
+
+
+bool Foam::newtonSolver::descentDirection
+(
+    const linearSolver::performance& perf,
+    const bool chord,
+    result& res
+) const
+{
+    // [S16c] a Krylov solve that stopped short (maxIterations, a
+    // breakdown) is a Newton direction only while its true residual is
+    // below |R|: then R.M dx > 0, a descent direction of |R|^2. Otherwise
+    // the line search only creeps on the non-smooth parts of R: the solve
+    // fails, as a Jacobian that cannot be factorised does (the step is
+    // retried Jacobian-free, then cut back [S18]); a chord step is first
+    // retried with a new Jacobian
+    const scalar rel = perf.relativeResidual;
+    const bool descent = rel < 1;
+    Info<< "        linear solve not converged ("
+        << (perf.reason.empty() ? string("no reason") : perf.reason).c_str()
+        << ", " << perf.iterations << " iterations, true relative"
+        << " residual " << rel << "): "
+        << (
+               descent ? "correction taken (a descent direction)"
+             : chord ? "no descent direction, new Jacobian"
+             : "no descent direction, the Newton solve fails"
+           )
+        << endl;
+    if (!descent && !chord)
+    {
+        res.reason =
+            "the linear solve failed: " + perf.reason
+          + ", true relative residual |b - M dx|/|b| = "
+          + Foam::name(rel) + " (not below 1: no descent direction)";
+    }
+    return descent;
+}
+
+
 bool Foam::newtonSolver::step
 (
     nonlinearSystem& sys,
@@ -338,50 +432,11 @@ bool Foam::newtonSolver::step
         const scalar relTol = normR > 0 ? min(linTol/normR, 0.1) : 0.1;
         linearSolver::performance perf = sys.solveJacobian(R, dx, relTol);
 
-        // [S14c] contact faces open at x that the correction closes are
-        // not in this Jacobian: the correction carries them deep into
-        // their obstacles. Solve again with them on the penalty's line
-        // through their gaps (residual and Jacobian at x), until the
-        // correction closes no other face
-        label nLookAhead = 0;
         if (contactLookAhead_ > 0 && !chord && gFinite(dx))
         {
-            Eigen::VectorXd Rp(x.size());
-            while
-            (
-                nLookAhead < contactLookAhead_
-             && sys.predictContacts(x, dx) > 0
-            )
+            if (!lookAhead(sys, x, linTol, dx, perf, res))
             {
-                ++nLookAhead;
-                evaluate(sys, x, Rp);
-                if (!sys.updateJacobian(x))
-                {
-                    sys.clearPredictedContacts();
-                    res.reason = sys.failure();
-                    return false;
-                }
-                dx.setZero(x.size());
-                const scalar normRp = gNorm(Rp);
-                perf =
-                    sys.solveJacobian
-                    (
-                        Rp, dx, normRp > 0 ? min(linTol/normRp, 0.1) : 0.1
-                    );
-                if (!gFinite(dx))
-                {
-                    break;
-                }
-            }
-            if (nLookAhead > 0)
-            {
-                sys.clearPredictedContacts();
-                res.contactLookAheadSolves += nLookAhead;
-                if (verbose_)
-                {
-                    Info<< "        " << nLookAhead << " look-ahead solves"
-                        << " with the faces the step closes" << endl;
-                }
+                return false;
             }
         }
         if (verbose_)
@@ -399,42 +454,14 @@ bool Foam::newtonSolver::step
               : perf.reason;
             return false;
         }
-        if (!perf.converged)
+        if (!perf.converged && !descentDirection(perf, chord, res))
         {
-            // [S16c] a Krylov solve that stopped short (maxIterations, a
-            // breakdown) is a Newton direction only while its true
-            // residual is below |R|: then R.M dx > 0, a descent direction
-            // of |R|^2. Otherwise the line search only creeps on the
-            // non-smooth parts of R: the solve fails, as a Jacobian that
-            // cannot be factorised does (the step is retried
-            // Jacobian-free, then cut back [S18]); a chord step is first
-            // retried with a new Jacobian
-            const scalar rel = perf.relativeResidual;
-            const bool descent = rel < 1;
-            Info<< "        linear solve not converged ("
-                << (perf.reason.empty() ? string("no reason") : perf.reason)
-                .c_str()
-                << ", " << perf.iterations << " iterations, true relative"
-                << " residual " << rel << "): "
-                << (
-                       descent ? "correction taken (a descent direction)"
-                     : chord ? "no descent direction, new Jacobian"
-                     : "no descent direction, the Newton solve fails"
-                   )
-                << endl;
-            if (!descent && chord)
+            if (!chord)
             {
-                chord = false;
-                return step(sys, x, R, linTol, it, chord, lastKrylov, dx, res);
-            }
-            if (!descent)
-            {
-                res.reason =
-                    "the linear solve failed: " + perf.reason
-                  + ", true relative residual |b - M dx|/|b| = "
-                  + Foam::name(rel) + " (not below 1: no descent direction)";
                 return false;
             }
+            chord = false;
+            return step(sys, x, R, linTol, it, chord, lastKrylov, dx, res);
         }
         return true;
     }
