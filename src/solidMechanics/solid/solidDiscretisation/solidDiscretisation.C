@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "solidDiscretisation.H"
+#include "faceColumns.H"
 #include "strictDictionary.H"
 #include "calculatedFvPatchFields.H"
 #include "ListListOps.H"
@@ -148,19 +149,30 @@ Foam::tensor Foam::solidDiscretisation::internalFaceF(const label facei) const
 }
 
 
-Foam::tensor Foam::solidDiscretisation::boundaryFaceF
+bool Foam::solidDiscretisation::boundaryFaceDefGrad
 (
     const label patchi,
-    const label i
+    const label i,
+    tensor& F,
+    scalar& Jbar,
+    faceColumns* fc,
+    const tensorField* cof
 ) const
 {
     const fvPatch& p = mesh_.boundary()[patchi];
     const label P = p.faceCells()[i];
     const vector& uP = u_[P];
     const tensor& GP = G_[P];
-
     const vector& delta = patchDelta_[patchi][i];
 
+    // the derivative columns' pieces: P's stencil, the face's direction
+    // e, L = I - e e (the tangential part of the cell gradients [S11])
+    const gradientStencil* sP = fc ? &grad_.stencil(P) : nullptr;
+    const label globalP = fc ? grad_.cellNumbering().toGlobal(P) : -1;
+    const vector e(delta/mag(delta));
+    const tensor L(tensor::I - sqr(e));
+
+    Jbar = J_[P];
     switch (bcs_.kind(patchi))
     {
         case solidBoundaries::COUPLED:
@@ -168,51 +180,112 @@ Foam::tensor Foam::solidDiscretisation::boundaryFaceF
             // the neighbour's values, exchanged by setIterate()
             const scalar w = p.weights()[i];
             const tensor& GN = GNbr_[patchi][i];
-            return fbar_.apply
+            F = volumetricAveraging::faceDefGrad
             (
-                volumetricAveraging::faceDefGrad
-                (
-                    GP, GN, w, delta, uNbr_[patchi][i] - uP
-                ),
-                w*J_[P] + (1 - w)*det(tensor::I + GN.T())
+                GP, GN, w, delta, uNbr_[patchi][i] - uP
             );
+            Jbar = w*J_[P] + (1 - w)*det(tensor::I + GN.T());
+            if (fc)
+            {
+                fc->addStencil(*sP, w, L, (*cof)[P]);
+                fc->addStencil
+                (
+                    grad_.neighbourStencil(patchi, i), 1 - w, L,
+                    cofactor(GN)
+                );
+                fc->addCompact
+                (
+                    grad_.neighbourCell(patchi, i), e/mag(delta)
+                );
+                fc->addCompact(globalP, -e/mag(delta));
+            }
+            return true;
         }
         case solidBoundaries::FIXED:
         {
             const vector& Db = D_.boundaryField()[patchi][i];
-            return fbar_.apply
-            (
-                volumetricAveraging::faceDefGrad(GP, GP, 1, delta, Db - uP),
-                J_[P]
-            );
+            F = volumetricAveraging::faceDefGrad(GP, GP, 1, delta, Db - uP);
+            if (fc)
+            {
+                fc->addStencil(*sP, 1, L, (*cof)[P]);
+                fc->addCompact(globalP, -e/mag(delta));
+            }
+            return true;
         }
         case solidBoundaries::SYMMETRY:
         {
-            // the tangential part of the extrapolated value
+            // the tangential part of the extrapolated value:
+            // dD = (I - n n).(u_P + delta.G_P) - u_P
             const vector& n = patchNormal_[patchi][i];
             const vector uB(uP + (delta & GP));
-            return fbar_.apply
+            F = volumetricAveraging::faceDefGrad
             (
-                volumetricAveraging::faceDefGrad
-                (
-                    GP, GP, 1, delta, (uB - (n & uB)*n) - uP
-                ),
-                J_[P]
+                GP, GP, 1, delta, (uB - (n & uB)*n) - uP
             );
+            if (fc)
+            {
+                const tensor Pn(tensor::I - sqr(n));
+                fc->addStencil(*sP, 1, L, (*cof)[P]);
+                const vector c(e/mag(delta));
+                const label self = fc->slot(globalP);
+                addScaled
+                (
+                    fc->dG[self], 1,
+                    outerMatrix
+                    (
+                        c,
+                        (Pn & (tensor::I + dotDerivative(delta, sP->self)))
+                      - tensor::I
+                    )
+                );
+                forAll(sP->cells, j)
+                {
+                    addScaled
+                    (
+                        fc->dG[fc->slot(sP->cells[j])], 1,
+                        outerMatrix(c, (delta & sP->coeffs[j])*Pn)
+                    );
+                }
+            }
+            return true;
         }
         case solidBoundaries::WEDGE:
         {
-            // [S20] the axisymmetric field rotated onto the face: the same
-            // volume change, so F-bar leaves it as it is
-            const tensor& T = bcs_.wedgeRotation(patchi);
-            return T & (tensor::I + GP.T()) & T.T();
+            // [S20] the cell's F, rotated onto the face by the caller: the
+            // same volume change, so no volume averaging
+            F = tensor::I + GP.T();
+            if (fc)
+            {
+                fc->addStencil(*sP, 1, tensor::I, (*cof)[P]);
+            }
+            return true;
         }
         default:
-            FatalErrorInFunction
-                << "No face deformation gradient on patch "
-                << p.name() << abort(FatalError);
+            return false;
     }
-    return tensor::I;
+}
+
+
+Foam::tensor Foam::solidDiscretisation::boundaryFaceF
+(
+    const label patchi,
+    const label i
+) const
+{
+    tensor F;
+    scalar Jbar;
+    if (!boundaryFaceDefGrad(patchi, i, F, Jbar))
+    {
+        FatalErrorInFunction
+            << "No face deformation gradient on patch "
+            << mesh_.boundary()[patchi].name() << abort(FatalError);
+    }
+    if (bcs_.kind(patchi) == solidBoundaries::WEDGE)
+    {
+        const tensor& T = bcs_.wedgeRotation(patchi);
+        return T & F & T.T();
+    }
+    return fbar_.apply(F, Jbar);
 }
 
 

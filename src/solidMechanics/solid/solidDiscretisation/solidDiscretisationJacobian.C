@@ -19,83 +19,12 @@ Description
 
 #include "solidDiscretisation.H"
 #include "HashTable.H"
+#include "faceColumns.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace Foam
 {
-
-//- The columns of one face: for every cell Q that the face's deformation
-//  gradient depends on, dG_f/du_Q and dJbar/du_Q
-class faceColumns
-{
-public:
-
-    DynamicList<label> cells;
-    DynamicList<tensorDerivative> dG;
-    DynamicList<vector> dJ;
-
-    faceColumns() : cells(32), dG(32), dJ(32) {}
-
-    void clear()
-    {
-        cells.clear();
-        dG.clear();
-        dJ.clear();
-    }
-
-    //- Slot of global cell c (appended, zero, when new)
-    label slot(const label c)
-    {
-        forAll(cells, s)
-        {
-            if (cells[s] == c)
-            {
-                return s;
-            }
-        }
-        cells.append(c);
-        dG.append(zeroDerivative());
-        dJ.append(Zero);
-        return cells.size() - 1;
-    }
-
-    //- w L . dG_P/du and w dJ_P/du of the cell with stencil s and
-    //  cofactor cof = J F^-T of its deformation gradient
-    void addStencil
-    (
-        const gradientStencil& s,
-        const scalar w,
-        const tensor& L,
-        const tensor& cof
-    )
-    {
-        const label self = slot(s.cell);
-        addScaled(dG[self], w, leftMultiply(L, s.self));
-        dJ[self] += w*contract(cof, transposed(s.self));
-        forAll(s.cells, j)
-        {
-            const label q = slot(s.cells[j]);
-            addScaled(dG[q], 1, outerIdentity(w*(L & s.coeffs[j])));
-            dJ[q] += w*(cof & s.coeffs[j]);
-        }
-    }
-
-    //- c (x) u_cell: the compact difference along the face [S11]
-    void addCompact(const label cell, const vector& c)
-    {
-        addScaled(dG[slot(cell)], 1, outerIdentity(c));
-    }
-};
-
-
-//- J F^-T of F = I + G^T
-inline tensor cofactor(const tensor& G)
-{
-    const tensor F(tensor::I + G.T());
-    return det(F)*inv(F).T();
-}
-
 
 //- The 3 x 3 block d(A : dF) for a 3 x 9 flux tangent A: K_ik = A_i . dF_k
 inline tensor fluxBlock
@@ -264,7 +193,6 @@ void Foam::solidDiscretisation::addBoundaryFaces
     const fvPatch& p = mesh_.boundary()[patchi];
     const labelUList& faceCells = p.faceCells();
     const solidBoundaries::patchKind kind = bcs_.kind(patchi);
-    const globalIndex& numbering = grad_.cellNumbering();
 
     faceColumns fc;
     stressTangent dPdF;
@@ -273,91 +201,15 @@ void Foam::solidDiscretisation::addBoundaryFaces
     forAll(faceCells, i)
     {
         const label P = faceCells[i];
-        const label globalP = numbering.toGlobal(P);
-        const gradientStencil& sP = grad_.stencil(P);
-        const vector& delta = patchDelta_[patchi][i];
-        const vector e(delta/mag(delta));
-        const tensor L(tensor::I - sqr(e));
-        const tensor& cofP = cof[P];
 
-        // F before volume averaging, Jbar, and the columns' dG_f, dJbar
-        tensor F(tensor::I);
-        scalar Jbar = J_[P];
+        // F before volume averaging, Jbar, and the columns' dG_f, dJbar:
+        // the residual's face deformation gradient and its derivative
+        tensor F;
+        scalar Jbar;
         fc.clear();
-
-        switch (kind)
+        if (!boundaryFaceDefGrad(patchi, i, F, Jbar, &fc, &cof))
         {
-            case solidBoundaries::COUPLED:
-            {
-                const scalar w = p.weights()[i];
-                const tensor& GN = GNbr_[patchi][i];
-                F = volumetricAveraging::faceDefGrad
-                (
-                    G_[P], GN, w, delta, uNbr_[patchi][i] - u_[P]
-                );
-                Jbar = w*J_[P] + (1 - w)*det(tensor::I + GN.T());
-                fc.addStencil(sP, w, L, cofP);
-                fc.addStencil
-                (
-                    grad_.neighbourStencil(patchi, i), 1 - w, L, cofactor(GN)
-                );
-                fc.addCompact(grad_.neighbourCell(patchi, i), e/mag(delta));
-                fc.addCompact(globalP, -e/mag(delta));
-                break;
-            }
-            case solidBoundaries::FIXED:
-            {
-                F = volumetricAveraging::faceDefGrad
-                (
-                    G_[P], G_[P], 1, delta,
-                    D_.boundaryField()[patchi][i] - u_[P]
-                );
-                fc.addStencil(sP, 1, L, cofP);
-                fc.addCompact(globalP, -e/mag(delta));
-                break;
-            }
-            case solidBoundaries::SYMMETRY:
-            {
-                // dD = (I - n n).(u_P + delta.G_P) - u_P
-                const vector& n = patchNormal_[patchi][i];
-                const tensor Pn(tensor::I - sqr(n));
-                const vector uB(u_[P] + (delta & G_[P]));
-                F = volumetricAveraging::faceDefGrad
-                (
-                    G_[P], G_[P], 1, delta, (uB - (n & uB)*n) - u_[P]
-                );
-                fc.addStencil(sP, 1, L, cofP);
-                const vector c(e/mag(delta));
-                const label self = fc.slot(globalP);
-                addScaled
-                (
-                    fc.dG[self], 1,
-                    outerMatrix
-                    (
-                        c,
-                        (Pn & (tensor::I + dotDerivative(delta, sP.self)))
-                      - tensor::I
-                    )
-                );
-                forAll(sP.cells, j)
-                {
-                    addScaled
-                    (
-                        fc.dG[fc.slot(sP.cells[j])], 1,
-                        outerMatrix(c, (delta & sP.coeffs[j])*Pn)
-                    );
-                }
-                break;
-            }
-            case solidBoundaries::WEDGE:
-            {
-                // [S20] F_w = T F_P T^T, no volume averaging
-                F = tensor::I + G_[P].T();
-                fc.addStencil(sP, 1, tensor::I, cofP);
-                break;
-            }
-            default:
-                return;
+            return;
         }
 
         const vector& S = p.Sf()[i];
