@@ -30,6 +30,11 @@ Description
     missing a history field stops naming it, and one run at a time uses a
     case folder (doc/theory.md [S19b]).
 
+    The functions of controlDict (OpenFOAM's function objects: probes,
+    fieldMinMax, surfaces, ...) run after every converged step, never
+    after a rejected attempt, with the output fields (sigma, epsilonPEq,
+    ...) derived for them at that step.
+
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
@@ -297,6 +302,11 @@ int main(int argc, char *argv[])
         writer.write(restartState);
     };
 
+    // controlDict's functions, as in OpenFOAM's solvers: read now, run
+    // after every converged step (a rejected attempt never reaches them),
+    // the output fields derived first so that they see the step's state
+    runTime.functionObjects().start();
+
     Eigen::VectorXd x, xStart;
     clockTime stepClock;
 
@@ -391,11 +401,18 @@ int main(int argc, char *argv[])
             // not Time's own write test
             writeNow();
         }
+        else if (runTime.functionObjects().size())
+        {
+            output.update();
+        }
+        runTime.functionObjects().execute();
 
         Info<< "    ExecutionTime = " << runTime.elapsedCpuTime() << " s"
             << "  ClockTime = " << runTime.elapsedClockTime() << " s"
             << nl << endl;
     }
+
+    runTime.functionObjects().end();
 
     Info<< "Steps: " << nSteps << ", Newton iterations: " << nNewtonTotal
         << " (" << scalar(nNewtonTotal)/max(nSteps, 1) << " per step)";
