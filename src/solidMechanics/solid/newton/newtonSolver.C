@@ -842,12 +842,13 @@ Foam::newtonSolver::result Foam::newtonSolver::solve
     Eigen::VectorXd& x,
     const Eigen::VectorXd& xStart,
     const bool jacobianFree,
-    const scalar looser
+    const scalar toleranceScale
 )
 {
-    // the tolerances of this solve (looser: [C5b]'s intermediate solves)
-    const scalar forceTol = looser*forceTol_;
-    const scalar displacementTol = looser*displacementTol_;
+    // the tolerances of this solve (toleranceScale > 1: [C5b]'s
+    // intermediate solves)
+    const scalar forceTol = toleranceScale*forceTol_;
+    const scalar displacementTol = toleranceScale*displacementTol_;
 
     result res;
     nResidualEvaluations_ = 0;

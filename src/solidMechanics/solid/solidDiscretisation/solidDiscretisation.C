@@ -155,8 +155,8 @@ bool Foam::solidDiscretisation::boundaryFaceDefGrad
     const label i,
     tensor& F,
     scalar& Jbar,
-    faceColumns* fc,
-    const tensorField* cof
+    faceColumns* columns,
+    const tensorField* cofactors
 ) const
 {
     const fvPatch& p = mesh_.boundary()[patchi];
@@ -167,8 +167,8 @@ bool Foam::solidDiscretisation::boundaryFaceDefGrad
 
     // the derivative columns' pieces: P's stencil, the face's direction
     // e, L = I - e e (the tangential part of the cell gradients [S11])
-    const gradientStencil* sP = fc ? &grad_.stencil(P) : nullptr;
-    const label globalP = fc ? grad_.cellNumbering().toGlobal(P) : -1;
+    const gradientStencil* sP = columns ? &grad_.stencil(P) : nullptr;
+    const label globalP = columns ? grad_.cellNumbering().toGlobal(P) : -1;
     const vector e(delta/mag(delta));
     const tensor L(tensor::I - sqr(e));
 
@@ -185,19 +185,19 @@ bool Foam::solidDiscretisation::boundaryFaceDefGrad
                 GP, GN, w, delta, uNbr_[patchi][i] - uP
             );
             Jbar = w*J_[P] + (1 - w)*det(tensor::I + GN.T());
-            if (fc)
+            if (columns)
             {
-                fc->addStencil(*sP, w, L, (*cof)[P]);
-                fc->addStencil
+                columns->addStencil(*sP, w, L, (*cofactors)[P]);
+                columns->addStencil
                 (
                     grad_.neighbourStencil(patchi, i), 1 - w, L,
                     cofactor(GN)
                 );
-                fc->addCompact
+                columns->addCompact
                 (
                     grad_.neighbourCell(patchi, i), e/mag(delta)
                 );
-                fc->addCompact(globalP, -e/mag(delta));
+                columns->addCompact(globalP, -e/mag(delta));
             }
             return true;
         }
@@ -205,10 +205,10 @@ bool Foam::solidDiscretisation::boundaryFaceDefGrad
         {
             const vector& Db = D_.boundaryField()[patchi][i];
             F = volumetricAveraging::faceDefGrad(GP, GP, 1, delta, Db - uP);
-            if (fc)
+            if (columns)
             {
-                fc->addStencil(*sP, 1, L, (*cof)[P]);
-                fc->addCompact(globalP, -e/mag(delta));
+                columns->addStencil(*sP, 1, L, (*cofactors)[P]);
+                columns->addCompact(globalP, -e/mag(delta));
             }
             return true;
         }
@@ -222,15 +222,15 @@ bool Foam::solidDiscretisation::boundaryFaceDefGrad
             (
                 GP, GP, 1, delta, (uB - (n & uB)*n) - uP
             );
-            if (fc)
+            if (columns)
             {
                 const tensor Pn(tensor::I - sqr(n));
-                fc->addStencil(*sP, 1, L, (*cof)[P]);
+                columns->addStencil(*sP, 1, L, (*cofactors)[P]);
                 const vector c(e/mag(delta));
-                const label self = fc->slot(globalP);
+                const label self = columns->slot(globalP);
                 addScaled
                 (
-                    fc->dG[self], 1,
+                    columns->dG[self], 1,
                     outerMatrix
                     (
                         c,
@@ -242,7 +242,7 @@ bool Foam::solidDiscretisation::boundaryFaceDefGrad
                 {
                     addScaled
                     (
-                        fc->dG[fc->slot(sP->cells[j])], 1,
+                        columns->dG[columns->slot(sP->cells[j])], 1,
                         outerMatrix(c, (delta & sP->coeffs[j])*Pn)
                     );
                 }
@@ -254,9 +254,9 @@ bool Foam::solidDiscretisation::boundaryFaceDefGrad
             // [S20] the cell's F, rotated onto the face by the caller: the
             // same volume change, so no volume averaging
             F = tensor::I + GP.T();
-            if (fc)
+            if (columns)
             {
-                fc->addStencil(*sP, 1, tensor::I, (*cof)[P]);
+                columns->addStencil(*sP, 1, tensor::I, (*cofactors)[P]);
             }
             return true;
         }

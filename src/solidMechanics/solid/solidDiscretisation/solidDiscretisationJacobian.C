@@ -126,7 +126,7 @@ static tensor forceBlock
 
 void Foam::solidDiscretisation::addInternalFaces
 (
-    const tensorField& cof,
+    const tensorField& cofactors,
     blockSparseMatrix& M
 ) const
 {
@@ -138,7 +138,7 @@ void Foam::solidDiscretisation::addInternalFaces
     const scalarField& weights = mesh_.weights();
     const globalIndex& numbering = grad_.cellNumbering();
 
-    faceColumns fc;
+    faceColumns columns;
     stressTangent dPdF;
     materialState scratch;
 
@@ -157,11 +157,11 @@ void Foam::solidDiscretisation::addInternalFaces
         );
         const scalar Jbar = w*J_[P] + (1 - w)*J_[N];
 
-        fc.clear();
-        fc.addStencil(grad_.stencil(P), w, L, cof[P]);
-        fc.addStencil(grad_.stencil(N), 1 - w, L, cof[N]);
-        fc.addCompact(numbering.toGlobal(N), e/mag(d));
-        fc.addCompact(numbering.toGlobal(P), -e/mag(d));
+        columns.clear();
+        columns.addStencil(grad_.stencil(P), w, L, cofactors[P]);
+        columns.addStencil(grad_.stencil(N), 1 - w, L, cofactors[N]);
+        columns.addCompact(numbering.toGlobal(N), e/mag(d));
+        columns.addCompact(numbering.toGlobal(P), -e/mag(d));
 
         laws_.cellLaw(P).stressAndTangent
         (
@@ -170,14 +170,14 @@ void Foam::solidDiscretisation::addInternalFaces
         const auto A = tangentDotS(dPdF, Sf[facei]);
         const volumetricAveraging::linearisation lin(fbar_.linearise(F, Jbar));
 
-        forAll(fc.cells, q)
+        forAll(columns.cells, q)
         {
             const tensor K
             (
-                solvedFluxBlock(A, lin, fc.dG[q], fc.dJ[q], M.components())
+                solvedFluxBlock(A, lin, columns.dG[q], columns.dJ[q], M.components())
             );
-            M.addBlock(P, fc.cells[q], -K);
-            M.addBlock(N, fc.cells[q], K);
+            M.addBlock(P, columns.cells[q], -K);
+            M.addBlock(N, columns.cells[q], K);
         }
     }
 }
@@ -186,7 +186,7 @@ void Foam::solidDiscretisation::addInternalFaces
 void Foam::solidDiscretisation::addBoundaryFaces
 (
     const label patchi,
-    const tensorField& cof,
+    const tensorField& cofactors,
     blockSparseMatrix& M
 ) const
 {
@@ -194,7 +194,7 @@ void Foam::solidDiscretisation::addBoundaryFaces
     const labelUList& faceCells = p.faceCells();
     const solidBoundaries::patchKind kind = bcs_.kind(patchi);
 
-    faceColumns fc;
+    faceColumns columns;
     stressTangent dPdF;
     materialState scratch;
 
@@ -206,8 +206,8 @@ void Foam::solidDiscretisation::addBoundaryFaces
         // the residual's face deformation gradient and its derivative
         tensor F;
         scalar Jbar;
-        fc.clear();
-        if (!boundaryFaceDefGrad(patchi, i, F, Jbar, &fc, &cof))
+        columns.clear();
+        if (!boundaryFaceDefGrad(patchi, i, F, Jbar, &columns, &cofactors))
         {
             return;
         }
@@ -222,14 +222,14 @@ void Foam::solidDiscretisation::addBoundaryFaces
                 T & F & T.T(), oldState(patchi, i), scratch, dPdF
             );
             const auto A = tangentDotS(dPdF, S);
-            forAll(fc.cells, q)
+            forAll(columns.cells, q)
             {
-                tensorDerivative dF(transposed(fc.dG[q]));
+                tensorDerivative dF(transposed(columns.dG[q]));
                 for (direction k = 0; k < 3; ++k)
                 {
                     dF[k] = T & dF[k] & T.T();
                 }
-                M.addBlock(P, fc.cells[q], -fluxBlock(A, dF));
+                M.addBlock(P, columns.cells[q], -fluxBlock(A, dF));
             }
             continue;
         }
@@ -255,17 +255,17 @@ void Foam::solidDiscretisation::addBoundaryFaces
         }
 
         const volumetricAveraging::linearisation lin(fbar_.linearise(F, Jbar));
-        forAll(fc.cells, q)
+        forAll(columns.cells, q)
         {
             M.addBlock
             (
-                P, fc.cells[q],
+                P, columns.cells[q],
                 -fluxBlock
                 (
                     A,
                     volumetricAveraging::derivative
                     (
-                        lin, transposed(fc.dG[q]), fc.dJ[q]
+                        lin, transposed(columns.dG[q]), columns.dJ[q]
                     )
                 )
             );
@@ -430,14 +430,14 @@ void Foam::solidDiscretisation::jacobian(blockSparseMatrix& M) const
     M.zero();
     patternMissed_ = false;
 
-    // dJ_P = cof(F_P) : dF_P, cof(F) = J F^-T, once per cell
-    tensorField cof(G_.size());
-    forAll(cof, celli)
+    // dJ_P = cofactors(F_P) : dF_P, cofactors(F) = J F^-T, once per cell
+    tensorField cofactors(G_.size());
+    forAll(cofactors, celli)
     {
-        cof[celli] = cofactor(G_[celli]);
+        cofactors[celli] = cofactor(G_[celli]);
     }
 
-    addInternalFaces(cof, M);
+    addInternalFaces(cofactors, M);
 
     forAll(mesh_.boundary(), patchi)
     {
@@ -449,7 +449,7 @@ void Foam::solidDiscretisation::jacobian(blockSparseMatrix& M) const
                 addForcePatch(patchi, M);
                 break;
             default:
-                addBoundaryFaces(patchi, cof, M);
+                addBoundaryFaces(patchi, cofactors, M);
                 break;
         }
     }
