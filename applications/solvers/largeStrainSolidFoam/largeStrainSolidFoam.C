@@ -52,6 +52,7 @@ Description
 #include "timeDirectoryWriter.H"
 #include "strictDictionary.H"
 #include "numberRange.H"
+#include <functional>
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -246,6 +247,53 @@ newtonSolver::result solveLoadStep
     return res;
 }
 
+//- A load step that did not converge: Time and the solid back to the last
+//  converged state, and the step cut back, or with action STOP the run
+//  stopped with the controller's message after writing that state
+//  (writeConverged; not at the run's start, which is on disk)
+void rejectStep
+(
+    Time& runTime,
+    const TimeState& lastConverged,
+    totalLagrangianSolid& solid,
+    const timeStepController& controller,
+    const newtonSolver::result& res,
+    const timeStepController::action action,
+    const bool atStart,
+    const std::function<void()>& writeConverged
+)
+{
+    Info<< "    step not converged (" << res.reason.c_str()
+        << ") after " << res.newtonIterations << " Newton iterations,"
+        << " force residual " << res.forceResidual << endl;
+
+    const scalar failedTime = runTime.value();
+    const scalar failedDeltaT = runTime.deltaTValue();
+    const scalar t0 = lastConverged.value();
+    runTime.TimeState::operator=(lastConverged);
+    // The failed attempt's iterate goes with it: the solid holds the last
+    // converged state again (what a write shows)
+    solid.restoreCommitted();
+
+    if (action == timeStepController::STOP)
+    {
+        if (!atStart)
+        {
+            writeConverged();
+        }
+        FatalErrorInFunction
+            << controller.stopMessage
+               (
+                   failedTime, failedDeltaT, res.reason, t0, atStart
+               ).c_str()
+            << nl << exit(FatalError);
+    }
+
+    Info<< "    cutting the time step back to " << controller.deltaT()
+        << " s and retrying (" << controller.nFailures() << " of "
+        << controller.maxCutBacks() << ")" << nl << endl;
+}
+
 } // End namespace Foam
 
 
@@ -347,36 +395,11 @@ int main(int argc, char *argv[])
 
         if (!res.converged)
         {
-            Info<< "    step not converged (" << res.reason.c_str()
-                << ") after " << res.newtonIterations << " Newton iterations,"
-                << " force residual " << res.forceResidual << endl;
-
-            const scalar failedTime = runTime.value();
-            const scalar failedDeltaT = runTime.deltaTValue();
-            runTime.TimeState::operator=(lastConverged);
-            // The failed attempt's iterate goes with it: the solid holds
-            // the last converged state again (what a write shows)
-            solid.restoreCommitted();
-
-            if (action == timeStepController::STOP)
-            {
-                // Keep the last converged state on disk
-                const bool atStart = t0 <= startValue;
-                if (!atStart)
-                {
-                    writeNow();
-                }
-                FatalErrorInFunction
-                    << controller.stopMessage
-                       (
-                           failedTime, failedDeltaT, res.reason, t0, atStart
-                       ).c_str()
-                    << nl << exit(FatalError);
-            }
-
-            Info<< "    cutting the time step back to " << controller.deltaT()
-                << " s and retrying (" << controller.nFailures() << " of "
-                << controller.maxCutBacks() << ")" << nl << endl;
+            rejectStep
+            (
+                runTime, lastConverged, solid, controller, res, action,
+                t0 <= startValue, writeNow
+            );
             continue;
         }
 
