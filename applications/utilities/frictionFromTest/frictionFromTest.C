@@ -169,18 +169,21 @@ void plot(const fileName& dir, const testMeasurements& meas)
 {
     const label n = meas.all().size();
     OStringStream os;
-    os  << "set multiplot layout " << n << ",1" << nl;
+    // Six digits on y: a protrusion's 0.01 mm scatter at 12 mm needs five
+    os  << "set format y '%.6g'" << nl
+        << "set multiplot layout " << n << ",1" << nl;
     for (const testMeasurements::series& s : meas.all())
     {
         const std::string fit = "'" + dir/"fit.dat" + "'";
         // A scalar series: its measurements against their row, the model's
-        // value a line. The series name in column 1 is a string: gnuplot
-        // compares with 'eq'
+        // value at each row drawn with a point too (one measured value, as
+        // the pear tube's protrusion, makes a line of no length). The
+        // series name in column 1 is a string: gnuplot compares with 'eq'
         const std::string model =
             s.responseEntry.empty()
           ? "'" + dir/(s.name + ".dat") + "' u 1:2 w l lw 2"
-          : fit + " u (strcol(1) eq '" + s.name + "' ? $0 : NaN):5"
-            " w l lw 2";
+          : fit + " u (strcol(1) eq '" + s.name + "' ? $2 : NaN):5"
+            " w lp lw 2 pt 6 ps 2";
         os  << "set title 'frictionFromTest: " << s.name.c_str() << "'" << nl
             << "set xlabel '" << s.xLabel.c_str() << "'" << nl
             << "set ylabel '" << s.yLabel.c_str() << "'" << nl

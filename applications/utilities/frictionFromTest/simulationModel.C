@@ -137,7 +137,7 @@ Foam::simulationModel::simulationModel
 :
     measurements_(measurements),
     lawDict_(dict.subDict("frictionLaw")),
-    names_(dict.get<wordList>("parameters")),
+    names_(lawParameters::names(dict, "parameters")),
     lawFile_
     (
         dict.getOrDefault<fileName>("lawFile", "constant/frictionLawDict")

@@ -40,6 +40,7 @@ Description
 
 #include "driverModes.H"
 #include "frictionFit.H"
+#include "lawParameters.H"
 #include "frictionDataTable.H"
 #include "OFstream.H"
 
@@ -86,7 +87,10 @@ void Foam::driverModes::fit(const dictionary& dict, const fileName& output)
     rec.t = data.column(0);
     rec.drive = data.column(1);
     rec.mu = data.column(2);
-    const frictionFit f(lawDict, d.get<wordList>("parameters"), rec, s, d);
+    const frictionFit f
+    (
+        lawDict, lawParameters::names(d, "parameters"), rec, s, d
+    );
     const frictionFit::result r = f.fit(level);
 
     const scalarField muStart(f.simulate(f.start()));

@@ -55,9 +55,9 @@ void Foam::driverModes::frictionMap
     const scalarList tN(d.get<scalarList>("contactPressures"));
     const word Dname
     (
-        d.getOrDefault<word>
+        lawParameters::name
         (
-            "filmThicknessParameter", "lubrication/filmThickness"
+            d, "filmThicknessParameter", "lubrication/filmThickness"
         )
     );
     const scalar Df = nonNegative(d, "filmMemoryDistance", true);

@@ -13,41 +13,187 @@ License
 #include "lawParameters.H"
 #include "error.H"
 #include "primitiveEntry.H"
+#include "ITstream.H"
+#include "OStringStream.H"
+#include "DynamicList.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace Foam
 {
 
-//- The sub-dictionary holding the last component of path, or nullptr
+//- The sub-dictionary holding the last component of path, or nullptr;
+//  'reached' is the deepest sub-dictionary of the path that exists (for
+//  the message listing what it holds) and 'where' its path
 static const dictionary* holder
 (
     const dictionary& lawDict,
     const word& path,
-    word& key
+    word& key,
+    const dictionary*& reached,
+    std::string& where
 )
 {
     const dictionary* d = &lawDict;
+    reached = d;
     std::string rest(path);
     std::size_t slash;
     while ((slash = rest.find('/')) != std::string::npos)
     {
-        const word sub(rest.substr(0, slash));
+        const word sub(rest.substr(0, slash), false);
         if (!d->isDict(sub))
         {
             return nullptr;
         }
         d = &d->subDict(sub);
+        reached = d;
+        where += (where.empty() ? "" : "/") + sub;
         rest = rest.substr(slash + 1);
     }
-    key = rest;
+    key = word(rest, false);
     return d->found(key) && !d->isDict(key) ? d : nullptr;
+}
+
+
+//- The parameter name starting at token i of toks: a word, or words
+//  joined by '/', or a string; i is left after it. Empty if none starts
+//  there.
+static std::string readName(const tokenList& toks, label& i)
+{
+    std::string name;
+    if (i < toks.size() && toks[i].isString())
+    {
+        return toks[i++].stringToken();
+    }
+    while (i < toks.size() && toks[i].isWord())
+    {
+        name += toks[i++].wordToken();
+        if
+        (
+            i + 1 < toks.size() && toks[i].isPunctuation()
+         && toks[i].pToken() == token::DIVIDE && toks[i + 1].isWord()
+        )
+        {
+            name += '/';
+            ++i;
+        }
+        else
+        {
+            break;
+        }
+    }
+    return name;
+}
+
+
+//- The tokens as written, for a message
+static std::string written(const tokenList& toks)
+{
+    OStringStream os;
+    forAll(toks, i)
+    {
+        os  << (i ? " " : "") << toks[i];
+    }
+    return os.str();
+}
+
+
+//- A name is keywords joined by single slashes, each a valid word
+static bool validName(const std::string& name)
+{
+    if (name.empty() || name.front() == '/' || name.back() == '/')
+    {
+        return false;
+    }
+    for (std::size_t i = 0; i < name.size(); ++i)
+    {
+        const char c = name[i];
+        if (c == '/' ? name[i + 1] == '/' : !word::valid(c))
+        {
+            return false;
+        }
+    }
+    return true;
 }
 
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::wordList Foam::lawParameters::names
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    // The entry's tokens as they stand: an unquoted path is several
+    const tokenList& toks = dict.lookup(key);
+    DynamicList<word> out;
+    bool closed = false;
+    label i = 0;
+    if
+    (
+        toks.size() && toks[0].isPunctuation()
+     && toks[0].pToken() == token::BEGIN_LIST
+    )
+    {
+        i = 1;
+        while (i < toks.size())
+        {
+            if
+            (
+                toks[i].isPunctuation() && toks[i].pToken() == token::END_LIST
+            )
+            {
+                closed = (i + 1 == toks.size());
+                break;
+            }
+            const std::string n(readName(toks, i));
+            if (!validName(n))
+            {
+                break;
+            }
+            out.append(word(n, false));
+        }
+    }
+    if (!closed)
+    {
+        FatalIOErrorInFunction(dict)
+            << "keyword '" << key << "': a list of parameter names expected,"
+            << " each a keyword of the law or a path to one in its"
+            << " sub-dictionaries, as (mu) or (mu lubrication/filmThickness);"
+            << " got " << written(toks).c_str() << exit(FatalIOError);
+    }
+    return wordList(std::move(out));
+}
+
+
+Foam::word Foam::lawParameters::name
+(
+    const dictionary& dict,
+    const word& key,
+    const word& deflt
+)
+{
+    if (!dict.found(key))
+    {
+        return deflt;
+    }
+    const tokenList& toks = dict.lookup(key);
+    label i = 0;
+    const std::string n(readName(toks, i));
+    if (!validName(n) || i != toks.size())
+    {
+        FatalIOErrorInFunction(dict)
+            << "keyword '" << key << "': one parameter name expected, a"
+            << " keyword of the law or a path to one in its"
+            << " sub-dictionaries (as lubrication/filmThickness); got "
+            << written(toks).c_str() << exit(FatalIOError);
+    }
+    return word(n, false);
+}
+
 
 Foam::scalar Foam::lawParameters::get
 (
@@ -58,14 +204,18 @@ Foam::scalar Foam::lawParameters::get
 )
 {
     word last;
-    const dictionary* d = holder(lawDict, path, last);
+    const dictionary* reached = nullptr;
+    std::string where;
+    const dictionary* d = holder(lawDict, path, last, reached, where);
     if (!d)
     {
         FatalIOErrorInFunction(asker)
             << "keyword '" << key << "': the friction law ("
             << lawDict.getOrDefault<word>("type", "?") << ") has no"
-            << " parameter '" << path << "' in its dictionary; its"
-            << " keywords: " << lawDict.toc() << exit(FatalIOError);
+            << " parameter '" << path.c_str() << "' in its dictionary; the"
+            << " keywords of "
+            << (where.empty() ? "its dictionary" : ("its sub-dictionary '" + where + "'").c_str())
+            << ": " << reached->toc() << exit(FatalIOError);
     }
     return d->get<scalar>(last);
 }
@@ -79,7 +229,9 @@ void Foam::lawParameters::set
 )
 {
     word last;
-    const dictionary* d = holder(lawDict, path, last);
+    const dictionary* reached = nullptr;
+    std::string where;
+    const dictionary* d = holder(lawDict, path, last, reached, where);
     if (!d)
     {
         FatalErrorInFunction
