@@ -136,7 +136,7 @@ def surfaceCards(name, faces):
 
 
 def runCcx(directory, job, timeout=7200):
-    """ccx -i job in directory, serial (OMP_NUM_THREADS=1), at nice 5.
+    """ccx -i job in directory, serial (OMP_NUM_THREADS=1), at nice 10.
     Returns wall and CPU (user + system) time [s] and whether the run
     ended normally (the .dat written and no *ERROR in the output)."""
     ccx = shutil.which("ccx")
@@ -148,7 +148,7 @@ def runCcx(directory, job, timeout=7200):
     t0 = time.time()
     c0 = os.times()
     with open(os.path.join(directory, "log.ccx"), "w") as out:
-        rc = subprocess.call(["nice", "-n", "5", ccx, "-i", job],
+        rc = subprocess.call(["nice", "-n", "10", ccx, "-i", job],
                              cwd=directory, stdout=out,
                              stderr=subprocess.STDOUT, env=env,
                              timeout=timeout)
@@ -163,6 +163,20 @@ def runCcx(directory, job, timeout=7200):
             + (c1.children_system - c0.children_system),
             "ok": ok, "rc": rc, "increments": incs, "iterations": iters,
             "log": log[-1500:]}
+
+
+def lastConvergedTime(directory, job):
+    """The total time of the last converged increment (the .sta file's
+    last row), 0 if none."""
+    t = 0.0
+    try:
+        for line in open(os.path.join(directory, job + ".sta")):
+            w = line.split()
+            if len(w) >= 7 and w[0].isdigit():
+                t = float(w[4])
+    except OSError:
+        pass
+    return t
 
 
 _header = re.compile(r"^\s*(.+?)\s*for (?:set (\S+)|all contact elements)"
