@@ -247,6 +247,32 @@ newtonSolver::result solveLoadStep
     return res;
 }
 
+//- controlDict's functions after a converged step, the output fields
+//  derived for them where the step was not written. OpenFOAM's list also
+//  writes its state (uniform/functionObjects) where Time's own write test
+//  says so; where the write schedule did not write the step (a restart
+//  from a time off the write interval, writeSchedule.H), that would leave
+//  a time directory without fields, which is taken away again
+void executeFunctions
+(
+    Time& runTime,
+    solidOutputFields& output,
+    const bool written
+)
+{
+    if (!written)
+    {
+        output.update();
+    }
+    const bool strayState = runTime.writeTime() && !written;
+    const bool timeDirExisted = isDir(runTime.timePath());
+    runTime.functionObjects().execute();
+    if (strayState && !timeDirExisted)
+    {
+        rmDir(runTime.timePath());
+    }
+}
+
 //- A load step that did not converge: Time and the solid back to the last
 //  converged state, and the step cut back, or with action STOP the run
 //  stopped with the controller's message after writing that state
@@ -418,24 +444,27 @@ int main(int argc, char *argv[])
 
         performance.write(res, nCutBacks);
 
-        if (writes.due(t0))
+        const bool written = writes.due(t0);
+        if (written)
         {
             // the output fields (sigma, pointD, ...) follow this schedule,
             // not Time's own write test
             writeNow();
         }
-        else if (runTime.functionObjects().size())
+        if (runTime.functionObjects().size())
         {
-            output.update();
+            executeFunctions(runTime, output, written);
         }
-        runTime.functionObjects().execute();
 
         Info<< "    ExecutionTime = " << runTime.elapsedCpuTime() << " s"
             << "  ClockTime = " << runTime.elapsedClockTime() << " s"
             << nl << endl;
     }
 
-    runTime.functionObjects().end();
+    if (runTime.functionObjects().size())
+    {
+        runTime.functionObjects().end();
+    }
 
     Info<< "Steps: " << nSteps << ", Newton iterations: " << nNewtonTotal
         << " (" << scalar(nNewtonTotal)/max(nSteps, 1) << " per step)";
