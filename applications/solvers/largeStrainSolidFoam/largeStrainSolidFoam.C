@@ -73,7 +73,7 @@ newtonSolver::result continueWithWiderOnset
     newtonSolver& nonlinearSolver,
     Eigen::VectorXd& x,
     Eigen::VectorXd& xStart,
-    const bool predict,
+    const timeStepController::predictorType predictor,
     const newtonSolver::result& failed,
     label& nNewton,
     label& nFailuresInARow
@@ -86,7 +86,7 @@ newtonSolver::result continueWithWiderOnset
     }
 
     // the predictor with the onsets as given, then the wider ones
-    solid.beginStep(x, xStart, predict);
+    solid.beginStep(x, xStart, predictor);
     if (!solid.widenContactOnset(factor))
     {
         return failed;
@@ -243,14 +243,14 @@ int main(int argc, char *argv[])
             // the retry of a failed attempt: from the last solution,
             // Jacobian-free (a bounded correction where the exact Jacobian
             // is singular)
-            solid.beginStep(x, xStart, controller.predict());
+            solid.beginStep(x, xStart, controller.predictor());
             res = nonlinearSolver.solve(solid, x, xStart, retry);
             nNewton += res.newtonIterations;
             if (!res.converged && !retry)
             {
                 res = continueWithWiderOnset
                 (
-                    solid, nonlinearSolver, x, xStart, controller.predict(),
+                    solid, nonlinearSolver, x, xStart, controller.predictor(),
                     res, nNewton, nContinuationFailures
                 );
             }
