@@ -13,7 +13,6 @@ License
 #include "timeStepController.H"
 #include "OStringStream.H"
 #include "Switch.H"
-#include "FlatOutput.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -59,9 +58,8 @@ Foam::timeStepController::readPredictor(const dictionary& dict)
     FatalIOErrorInFunction(dict)
         << "Keyword 'predictor' in dictionary " << dict.name() << ": "
         << ePtr->stream().toString().c_str() << " is not a predictor;"
-        << " expected one of "
-        << flatOutput(predictorTypeNames.sortedToc())
-        << " (or yes = extrapolate, no = none)" << nl
+        << " expected extrapolate (the default), tangent, tangentFirst or"
+        << " none (or yes = extrapolate, no = none)" << nl
         << exit(FatalIOError);
     return NONE;
 }
