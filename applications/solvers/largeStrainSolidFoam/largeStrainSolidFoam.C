@@ -79,7 +79,7 @@ newtonSolver::result continueWithWiderOnset
     newtonSolver& nonlinearSolver,
     Eigen::VectorXd& x,
     Eigen::VectorXd& xStart,
-    const bool predict,
+    const timeStepController::predictorType predictor,
     const newtonSolver::result& failed,
     label& nNewton,
     label& nFailuresInARow
@@ -92,7 +92,7 @@ newtonSolver::result continueWithWiderOnset
     }
 
     // the predictor with the onsets as given, then the wider ones
-    solid.beginStep(x, xStart, predict);
+    solid.beginStep(x, xStart, predictor);
     if (!solid.widenContactOnset(factor))
     {
         return failed;
@@ -212,14 +212,14 @@ newtonSolver::result solveLoadStep
     bool retry = false;
     while (action == timeStepController::RETRY)
     {
-        solid.beginStep(x, xStart, controller.predict());
+        solid.beginStep(x, xStart, controller.predictor());
         res = nonlinearSolver.solve(solid, x, xStart, retry);
         nNewton += res.newtonIterations;
         if (!res.converged && !retry)
         {
             res = continueWithWiderOnset
             (
-                solid, nonlinearSolver, x, xStart, controller.predict(),
+                solid, nonlinearSolver, x, xStart, controller.predictor(),
                 res, nNewton, nContinuationFailures
             );
         }

@@ -15,8 +15,10 @@ Description
     step is cut back by cutBackFactor; after maxCutBacks failures in a row,
     or a step that would fall below minDeltaTRatio deltaT, the run stops;
     converged steps grow by timeStepGrowth up to deltaT; the state written
-    for a restart gives the same next step. Expected values follow from
-    the rules by hand.
+    for a restart gives the same next step; the predictor keyword's values
+    ([S18c]: extrapolate, tangent, tangentFirst, none, and the former
+    yes/no) and no predictor in a retry. Expected values follow from the
+    rules by hand.
 
 \*---------------------------------------------------------------------------*/
 
@@ -88,6 +90,30 @@ int main()
         checkAbs("default factor 0.5", c.deltaT(), 0.5, 0);
         c.converged();
         checkAbs("default growth 1.5", c.deltaT(), 0.75, 1e-15);
+    }
+
+    Info<< "The predictor's kinds ([S18], [S18c]): a retry uses none"
+        << endl;
+    {
+        ctrl d(controls(""), 1);
+        checkTrue("default extrapolate", d.predictor() == ctrl::EXTRAPOLATE);
+        ctrl y(controls("predictor yes;"), 1);
+        checkTrue("yes = extrapolate", y.predictor() == ctrl::EXTRAPOLATE);
+        ctrl n(controls("predictor no;"), 1);
+        checkTrue("no = none", n.predictor() == ctrl::NONE);
+        ctrl z(controls("predictor none;"), 1);
+        checkTrue("none", z.predictor() == ctrl::NONE && !z.predict());
+        ctrl e(controls("predictor extrapolate;"), 1);
+        checkTrue("extrapolate", e.predictor() == ctrl::EXTRAPOLATE);
+        ctrl f(controls("predictor tangentFirst;"), 1);
+        checkTrue("tangentFirst", f.predictor() == ctrl::TANGENT_FIRST);
+
+        ctrl c(controls("predictor tangent;"), 1);
+        checkTrue("tangent", c.predictor() == ctrl::TANGENT && c.predict());
+        checkTrue("tangent fails -> RETRY", c.failed(1) == ctrl::RETRY);
+        checkTrue("the retry without it", c.predictor() == ctrl::NONE);
+        checkTrue("retry fails -> CUT_BACK", c.failed(1) == ctrl::CUT_BACK);
+        checkTrue("the cut step with it", c.predictor() == ctrl::TANGENT);
     }
 
     Info<< "Minimum step: a cut below minDeltaTRatio deltaT stops" << endl;

@@ -12,6 +12,58 @@ License
 
 #include "timeStepController.H"
 #include "OStringStream.H"
+#include "Switch.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::timeStepController::predictorType>
+Foam::timeStepController::predictorTypeNames
+({
+    { predictorType::NONE, "none" },
+    { predictorType::EXTRAPOLATE, "extrapolate" },
+    { predictorType::TANGENT, "tangent" },
+    { predictorType::TANGENT_FIRST, "tangentFirst" },
+});
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::timeStepController::predictorType
+Foam::timeStepController::readPredictor(const dictionary& dict)
+{
+    const entry* ePtr = dict.findEntry("predictor", keyType::LITERAL);
+    if (!ePtr)
+    {
+        return EXTRAPOLATE;
+    }
+
+    // One word: a name of the choice, or the former switch's yes/no
+    ITstream& is = ePtr->stream();
+    const token tok(is);
+    if (tok.isWord() && is.eof())
+    {
+        const word& w = tok.wordToken();
+        if (predictorTypeNames.found(w))
+        {
+            return predictorTypeNames.get(w);
+        }
+        // 'none' is also a switch value (false): the choice's name wins
+        const Switch sw(w, true);
+        if (sw.valid())
+        {
+            return sw ? EXTRAPOLATE : NONE;
+        }
+    }
+
+    FatalIOErrorInFunction(dict)
+        << "Keyword 'predictor' in dictionary " << dict.name() << ": "
+        << ePtr->stream().toString().c_str() << " is not a predictor;"
+        << " expected extrapolate (the default), tangent, tangentFirst or"
+        << " none (or yes = extrapolate, no = none)" << nl
+        << exit(FatalIOError);
+    return NONE;
+}
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -26,7 +78,7 @@ Foam::timeStepController::timeStepController
     cutBackFactor_(dict.lookupOrDefault<scalar>("cutBackFactor", 0.5)),
     growth_(dict.lookupOrDefault<scalar>("timeStepGrowth", 1.5)),
     minDeltaTRatio_(dict.lookupOrDefault<scalar>("minDeltaTRatio", 1e-6)),
-    predictor_(dict.lookupOrDefault<bool>("predictor", true)),
+    predictor_(readPredictor(dict)),
     deltaT_(userDeltaT),
     nFailures_(0),
     retrying_(false),
@@ -66,7 +118,8 @@ Foam::timeStepController::action Foam::timeStepController::failed
 )
 {
     // The time extrapolation misleads at a kink of the load path (a hold
-    // after a ramp): the same step is tried once from the last solution
+    // after a ramp), the tangent where the step's response is far from
+    // linear: the same step is tried once from the last solution
     if (predict())
     {
         retrying_ = true;

@@ -16,6 +16,7 @@ License
 #include "calculatedFvPatchFields.H"
 #include "cpuTime.H"
 #include "solidRestartState.H"
+#include "eigenVector.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -161,6 +162,12 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
        .lookupOrDefault<bool>("predictorContact", true)
     ),
     bodySize_(mag(mesh.bounds().span())),
+    tangentGuess_(),
+    tangentTime_(-GREAT),
+    tangentCommits_(-1),
+    nCommits_(0),
+    previousStep_(false),
+    fixedValues0_(),
     checkStep_(1e-8)
 {
     // D is a displacement in metres: a field file of other dimensions is
@@ -232,15 +239,20 @@ Foam::totalLagrangianSolid::totalLagrangianSolid(const fvMesh& mesh)
     if (previousIo.typeHeaderOk<volVectorField>())
     {
         discretisation_.setPreviousStep(Dprevious_.primitiveField(), dt0);
+        previousStep_ = true;
     }
     else if (discretisation_.inertia() && velIo.typeHeaderOk<volVectorField>())
     {
+        previousStep_ = true;
         const volVectorField vel(velIo, mesh);
         discretisation_.setPreviousStep
         (
             D_.primitiveField() - vel.primitiveField()*dt0, dt0
         );
     }
+
+    // [S18c] the given displacements of the state read (a restart's too)
+    fixedValues0_ = fixedValues();
 }
 
 
@@ -259,11 +271,121 @@ Foam::totalLagrangianSolid::~totalLagrangianSolid()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::List<Foam::vectorField>
+Foam::totalLagrangianSolid::fixedValues() const
+{
+    List<vectorField> values(mesh_.boundary().size());
+    forAll(values, patchi)
+    {
+        if (bcs_.kind(patchi) == solidBoundaries::FIXED)
+        {
+            values[patchi] = D_.boundaryField()[patchi];
+        }
+    }
+    return values;
+}
+
+
+void Foam::totalLagrangianSolid::setFixedValues
+(
+    const List<vectorField>& a,
+    const List<vectorField>& b,
+    const scalar s
+)
+{
+    forAll(a, patchi)
+    {
+        if (bcs_.kind(patchi) == solidBoundaries::FIXED)
+        {
+            D_.boundaryFieldRef()[patchi] ==
+                a[patchi] + s*(b[patchi] - a[patchi]);
+        }
+    }
+}
+
+
+bool Foam::totalLagrangianSolid::tangentPrediction
+(
+    const Eigen::VectorXd& xStart,
+    Eigen::VectorXd& x
+)
+{
+    // [S18c] linearised at the last converged state: D_n with its given
+    // displacements. The residual there is the load of the forces and
+    // obstacles of the new time; the given displacements' change enters
+    // through the residual's derivative along it, a central difference
+    // over 1e-3 of the change (error 1e-6 of a nonlinear response; exact
+    // for a linear one). The change itself at D_n would be no guide: the
+    // ironing die's first push inverts its top cells there, where neither
+    // the residual nor its Jacobian says anything useful
+    const List<vectorField> fixedValues1(fixedValues());
+    setFixedValues(fixedValues0_, fixedValues1, 0);
+
+    string why;
+    Eigen::VectorXd R;
+    Eigen::VectorXd dx;
+    residual(xStart, R);
+    const bool jacobianOk = gFinite(R) && updateJacobian(xStart);
+    if (jacobianOk)
+    {
+        const scalar s = 1e-3;
+        Eigen::VectorXd Rplus;
+        Eigen::VectorXd Rminus;
+        setFixedValues(fixedValues0_, fixedValues1, s);
+        residual(xStart, Rplus);
+        setFixedValues(fixedValues0_, fixedValues1, -s);
+        residual(xStart, Rminus);
+        R += (Rplus - Rminus)/(2*s);
+    }
+    setFixedValues(fixedValues0_, fixedValues1, 1);
+
+    if (!jacobianOk)
+    {
+        why = gFinite(R) ? failure() : "the residual is not finite";
+    }
+    else if (!gFinite(R))
+    {
+        why = "the residual's derivative is not finite";
+    }
+    else
+    {
+        // as tight as the Newton solve's first ([S16b]
+        // initialForcingTerm): an error here is Newton's to remove
+        dx.setZero(xStart.size());
+        const linearSolver::performance perf = solveJacobian(R, dx, 1e-4);
+        if (!gFinite(dx))
+        {
+            why = "the linear solve's correction is not finite";
+        }
+        else if (!perf.converged && !(perf.relativeResidual < 1))
+        {
+            // [S16c] not a descent direction
+            why =
+                "the linear solve stopped at relative residual "
+              + Foam::name(perf.relativeResidual) + " (" + perf.reason + ")";
+        }
+    }
+
+    // the linear solver starts the Newton solve as at any step [S19]
+    linearSolver_->forgetHistory();
+    discretisation_.setIterate(discretisation_.D0());
+
+    if (!why.empty())
+    {
+        Info<< "    tangent predictor not used, the step starts from the"
+            << " last converged state: " << why.c_str() << endl;
+        return false;
+    }
+    x = xStart + dx;
+    return true;
+}
+
+
 void Foam::totalLagrangianSolid::beginStep
 (
     Eigen::VectorXd& x,
     Eigen::VectorXd& xStart,
-    const bool predict
+    const timeStepController::predictorType predictor
 )
 {
     // Boundary values at the new time (uniformFixedValue and the like)
@@ -278,23 +400,47 @@ void Foam::totalLagrangianSolid::beginStep
     // [C5b] every attempt starts from the last converged multipliers
     discretisation_.resetAugmentation();
 
-    if (predict)
+    // [S18c] tangentFirst: the tangent where the extrapolation has no
+    // step to extrapolate (it would give D_n)
+    const timeStepController::predictorType kind =
+        predictor != timeStepController::TANGENT_FIRST ? predictor
+      : previousStep_ ? timeStepController::EXTRAPOLATE
+      : timeStepController::TANGENT;
+
+    if (kind == timeStepController::EXTRAPOLATE)
     {
         const scalar ratio =
             mesh_.time().deltaTValue()/discretisation_.deltaT0();
         Eigen::VectorXd x00;
         pack(discretisation_.D00(), x00);
         x += ratio*(xStart - x00);
-
-        // [S18b] faces in contact at the last converged state kept in
-        // contact by the prediction
-        if (predictorContact_)
+    }
+    else if (kind == timeStepController::TANGENT)
+    {
+        // [S18c] the continuation retry [S14e] asks again for the same
+        // step: the same guess, without a second Jacobian and solve
+        const scalar t = mesh_.time().value();
+        if (tangentCommits_ == nCommits_ && tangentTime_ == t)
         {
-            vectorField u(unpack(x));
-            if (discretisation_.correctPrediction(u))
-            {
-                pack(u, x);
-            }
+            x = tangentGuess_;
+        }
+        else
+        {
+            tangentPrediction(xStart, x);
+            tangentGuess_ = x;
+            tangentTime_ = t;
+            tangentCommits_ = nCommits_;
+        }
+    }
+
+    // [S18b] faces in contact at the last converged state kept in contact
+    // by the prediction
+    if (predictor != timeStepController::NONE && predictorContact_)
+    {
+        vectorField u(unpack(x));
+        if (discretisation_.correctPrediction(u))
+        {
+            pack(u, x);
         }
     }
 }
@@ -386,6 +532,8 @@ void Foam::totalLagrangianSolid::commit(const Eigen::VectorXd& x)
 {
     discretisation_.setIterate(unpack(x));
     discretisation_.commit(mesh_.time().deltaTValue());
+    ++nCommits_;
+    previousStep_ = true;
 
     D_.primitiveFieldRef() = discretisation_.D0();
     D_.correctBoundaryConditions();
@@ -401,6 +549,8 @@ void Foam::totalLagrangianSolid::commit(const Eigen::VectorXd& x)
     }
     Dprevious_.primitiveFieldRef() = discretisation_.D00();
     Dprevious_.correctBoundaryConditions();
+
+    fixedValues0_ = fixedValues();
 }
 
 
