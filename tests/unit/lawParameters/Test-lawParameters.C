@@ -38,8 +38,7 @@ namespace
 
 dictionary parse(const std::string& text)
 {
-    IStringStream is(text);
-    return dictionary(is);
+    return unitTest::controls(text);
 }
 
 const dictionary lawB

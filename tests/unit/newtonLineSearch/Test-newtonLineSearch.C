@@ -40,13 +40,6 @@ Description
 using namespace Foam;
 using namespace unitTest;
 
-static dictionary controls(const char* text)
-{
-    IStringStream is(text);
-    return dictionary(is);
-}
-
-
 //- |R| along the step as a function of l, recording the fractions asked
 struct alongStep
 {

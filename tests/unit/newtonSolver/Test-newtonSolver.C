@@ -253,13 +253,6 @@ public:
 };
 
 
-static dictionary controls(const char* text)
-{
-    IStringStream is(text);
-    return dictionary(is);
-}
-
-
 int main()
 {
     Info<< "Finiteness tests under trapped floating-point exceptions" << endl;

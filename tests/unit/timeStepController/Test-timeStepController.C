@@ -29,12 +29,6 @@ Description
 using namespace Foam;
 using namespace unitTest;
 
-static dictionary controls(const char* text)
-{
-    IStringStream is(text);
-    return dictionary(is);
-}
-
 int main()
 {
     typedef timeStepController ctrl;
