@@ -11,6 +11,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mechanicalLaw.H"
+#include "boundedEntry.H"
+#include "OStringStream.H"
 #include "strictDictionary.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -33,24 +35,22 @@ Foam::scalar Foam::mechanicalLaw::readBounded
     const bool open
 )
 {
-    const scalar value = dict.get<scalar>(key);
-
-    const bool ok =
-        open
-      ? (value > lower && value < upper)
-      : (value >= lower && value <= upper);
-
-    if (!ok)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword '" << key << "' in dictionary " << dict.name()
-            << " is " << value << "; expected a value in "
-            << (open ? "(" : "[") << lower << ", " << upper
-            << (open ? ")" : "]") << nl
-            << exit(FatalIOError);
-    }
-
-    return value;
+    OStringStream expected;
+    expected
+        << "a value in " << (open ? "(" : "[") << lower << ", " << upper
+        << (open ? ")" : "]");
+    return strictDictionary::readBounded<scalar>
+    (
+        dict, key,
+        [&](const scalar& value)
+        {
+            return
+                open
+              ? (value > lower && value < upper)
+              : (value >= lower && value <= upper);
+        },
+        expected.str()
+    );
 }
 
 
