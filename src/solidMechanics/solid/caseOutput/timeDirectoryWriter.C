@@ -307,160 +307,160 @@ void Foam::timeDirectoryWriter::fail
 }
 
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::timeDirectoryWriter::write(regIOobject& marker)
+void Foam::timeDirectoryWriter::cutShortInLastEntry(const fileName& path)
 {
-    const fileName dir = runTime_.timePath();
-    const fileName markerFile = markerPath(runTime_, runTime_.timeName());
-    nWritten_ = 0;
-    ++nDirs_;
-    const bool faulty = nDirs_ == faultDir_;
+    // a run killed while writing the file: its last entry (before its last
+    // ';') missing, so that it does not parse
+    std::ifstream is(path.c_str(), std::ios::binary);
+    std::string text
+    (
+        (std::istreambuf_iterator<char>(is)),
+        std::istreambuf_iterator<char>()
+    );
+    is.close();
+    std::ofstream os(path.c_str(), std::ios::binary | std::ios::trunc);
+    const std::size_t cut = text.rfind(';');
+    os.write(text.data(), cut == std::string::npos ? text.size()/2 : cut);
+}
 
-    // [S19b] a directory written again loses its mark first
-    if (isFile(markerFile, false) && !rm(markerFile))
+
+void Foam::timeDirectoryWriter::injectFault
+(
+    const std::function<bool()>& writer,
+    const fileName& path
+) const
+{
+    if (nDirs_ != faultDir_ || nWritten_ != faultAfter_)
     {
-        fail(markerFile, "the old mark could not be removed");
+        return;
     }
-
-    // One file: the test hook, the write, the file read back to its end
-    auto writeFile = [&](const std::function<bool()>& writer,
-                         const std::function<fileName()>& path)
+    const fileName dir = runTime_.timePath();
+    if (faultKind_ == "kill")
     {
-        if (faulty && nWritten_ == faultAfter_ && faultKind_ == "kill")
-        {
-            Info<< "TRIBOFOAM_WRITE_FAULT: killed after " << nWritten_
-                << " files of " << dir << endl;
-            ::kill(::getpid(), SIGKILL);
-        }
-        if (faulty && nWritten_ == faultAfter_ && faultKind_ == "killIn")
-        {
-            // the file the run was writing when killed, where the writer
-            // puts it (its temporary name, if any): cut short in its last
-            // entry (before its last ';'), so that it does not parse
-            writer();
-            const fileName p(path());
-            std::ifstream is(p.c_str(), std::ios::binary);
-            std::string text
-            (
-                (std::istreambuf_iterator<char>(is)),
-                std::istreambuf_iterator<char>()
-            );
-            is.close();
-            std::ofstream os(p.c_str(), std::ios::binary | std::ios::trunc);
-            const std::size_t cut = text.rfind(';');
-            os.write
-            (
-                text.data(), cut == std::string::npos ? text.size()/2 : cut
-            );
-            os.close();
-            Info<< "TRIBOFOAM_WRITE_FAULT: killed in the write of " << p
-                << " after " << nWritten_ << " files of " << dir << endl;
-            ::kill(::getpid(), SIGKILL);
-        }
-        if (faulty && nWritten_ == faultAfter_ && faultKind_ == "fail")
-        {
-            fail(path(), "TRIBOFOAM_WRITE_FAULT: a simulated failure");
-        }
-        if (!writer())
-        {
-            fail(path(), "the stream reported an error");
-        }
-        if (!endsComplete(path()))
-        {
-            fail(path(), "the file read back is cut short");
-        }
-        ++nWritten_;
-    };
+        Info<< "TRIBOFOAM_WRITE_FAULT: killed after " << nWritten_
+            << " files of " << dir << endl;
+        ::kill(::getpid(), SIGKILL);
+    }
+    if (faultKind_ == "killIn")
+    {
+        // the file being written where the writer puts it (its temporary
+        // name, if any)
+        writer();
+        cutShortInLastEntry(path);
+        Info<< "TRIBOFOAM_WRITE_FAULT: killed in the write of " << path
+            << " after " << nWritten_ << " files of " << dir << endl;
+        ::kill(::getpid(), SIGKILL);
+    }
+    if (faultKind_ == "fail")
+    {
+        fail(path, "TRIBOFOAM_WRITE_FAULT: a simulated failure");
+    }
+}
 
+
+void Foam::timeDirectoryWriter::writeChecked
+(
+    const std::function<bool()>& writer,
+    const fileName& path
+)
+{
+    injectFault(writer, path);
+    if (!writer())
+    {
+        fail(path, "the stream reported an error");
+    }
+    if (!endsComplete(path))
+    {
+        fail(path, "the file read back is cut short");
+    }
+    ++nWritten_;
+}
+
+
+void Foam::timeDirectoryWriter::writeAside
+(
+    const regIOobject& obj,
+    const fileName& file
+)
+{
+    const fileName aside = file + ".writing";
+    writeChecked
+    (
+        [&]()
+        {
+            mkDir(file.path());
+            OFstream os(aside);
+            bool ok = os.good() && obj.writeHeader(os);
+            ok = ok && obj.writeData(os);
+            IOobject::writeEndDivider(os);
+            os.flush();
+            return ok && os.good();
+        },
+        aside
+    );
+    if (!mv(aside, file))
+    {
+        fail(file, "renaming " + aside + " failed");
+    }
+}
+
+
+void Foam::timeDirectoryWriter::writeFields(const regIOobject& marker)
+{
     DynamicList<const regIOobject*> objects;
     collect(runTime_, marker, objects);
+    const fileName dir = runTime_.timePath();
     for (const regIOobject* obj : objects)
     {
         // the path at this time (objectPath() names the last instance
         // until the object is written)
-        const fileName path
-        (
-            dir/obj->db().dbDir()/obj->local()/obj->name()
-        );
-        writeFile
+        writeChecked
         (
             [&]() { return obj->write(); },
-            [&]() { return path; }
+            dir/obj->db().dbDir()/obj->local()/obj->name()
         );
     }
+}
 
-    // One file complete or not at all: written aside, then renamed
-    auto writeAside = [&](const regIOobject& obj, const fileName& file)
-    {
-        const fileName aside = file + ".writing";
-        writeFile
-        (
-            [&]()
-            {
-                mkDir(file.path());
-                OFstream os(aside);
-                bool ok = os.good() && obj.writeHeader(os);
-                ok = ok && obj.writeData(os);
-                IOobject::writeEndDivider(os);
-                os.flush();
-                return ok && os.good();
-            },
-            [&]() { return aside; }
-        );
-        if (!mv(aside, file))
-        {
-            fail(file, "renaming " + aside + " failed");
-        }
-    };
 
-    // Time's own dictionary after the fields (an incomplete directory
-    // mostly lacks it), written aside like the mark: Time reads it from
-    // the latest directory before the solver can step back from an
-    // incomplete one, and one cut short (a run killed while writing it)
-    // would stop every restart. The entries of Time::writeTimeDict
-    {
-        IOdictionary timeDict
+void Foam::timeDirectoryWriter::writeTimeDictionary()
+{
+    // After the fields (an incomplete directory mostly lacks it), written
+    // aside like the mark: Time reads it from the latest directory before
+    // the solver can step back from an incomplete one, and one cut short
+    // (a run killed while writing it) would stop every restart
+    IOdictionary timeDict
+    (
+        IOobject
         (
-            IOobject
-            (
-                "time",
-                runTime_.timeName(),
-                "uniform",
-                runTime_,
-                IOobject::NO_READ,
-                IOobject::NO_WRITE,
-                false
-            )
-        );
-        timeDict.add
+            "time",
+            runTime_.timeName(),
+            "uniform",
+            runTime_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    timeDict.add
+    (
+        "value",
+        Time::timeName
         (
-            "value",
-            Time::timeName
-            (
-                runTime_.timeToUserTime(runTime_.value()),
-                timePrecision::maxPrecision_
-            )
-        );
-        timeDict.add("name", string(runTime_.timeName()));
-        timeDict.add("index", runTime_.timeIndex());
-        timeDict.add
-        (
-            "deltaT", runTime_.timeToUserTime(runTime_.deltaTValue())
-        );
-        timeDict.add
-        (
-            "deltaT0", runTime_.timeToUserTime(runTime_.deltaT0Value())
-        );
-        writeAside(timeDict, dir/"uniform"/"time");
-    }
+            runTime_.timeToUserTime(runTime_.value()),
+            timePrecision::maxPrecision_
+        )
+    );
+    timeDict.add("name", string(runTime_.timeName()));
+    timeDict.add("index", runTime_.timeIndex());
+    timeDict.add("deltaT", runTime_.timeToUserTime(runTime_.deltaTValue()));
+    timeDict.add("deltaT0", runTime_.timeToUserTime(runTime_.deltaT0Value()));
+    writeAside(timeDict, runTime_.timePath()/"uniform"/"time");
+}
 
-    // The mark last
-    marker.instance() = runTime_.timeName();
-    writeAside(marker, markerFile);
 
-    // purgeWrite: the oldest complete directories removed, once the new
-    // one is complete
+void Foam::timeDirectoryWriter::purgeOldest()
+{
     if (written_.empty() || written_.top() != runTime_.timeName())
     {
         written_.push(runTime_.timeName());
@@ -469,6 +469,31 @@ void Foam::timeDirectoryWriter::write(regIOobject& marker)
     {
         rmDir(runTime_.path()/written_.pop());
     }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::timeDirectoryWriter::write(regIOobject& marker)
+{
+    const fileName markerFile = markerPath(runTime_, runTime_.timeName());
+    nWritten_ = 0;
+    ++nDirs_;
+
+    // [S19b] a directory written again loses its mark first
+    if (isFile(markerFile, false) && !rm(markerFile))
+    {
+        fail(markerFile, "the old mark could not be removed");
+    }
+
+    writeFields(marker);
+    writeTimeDictionary();
+
+    // the mark last, once every other file is complete
+    marker.instance() = runTime_.timeName();
+    writeAside(marker, markerFile);
+
+    purgeOldest();
 }
 
 
