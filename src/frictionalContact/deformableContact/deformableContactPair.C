@@ -49,6 +49,84 @@ public:
     }
 };
 
+
+//- [C13] The outputs of slave face sf: its force f_s and the share
+//  -w_sm f_s of each of the given masters (zero where it does not overlap
+//  them or is out of reach)
+static void pairOutputs
+(
+    const slaveFace& sf,
+    const labelList& masters,
+    List<vector>& out
+)
+{
+    out.setSize(1 + masters.size());
+    out = Zero;
+    if (!sf.inReach)
+    {
+        return;
+    }
+    const vector f(contactFaces::slaveForce(sf));
+    out[0] = f;
+    forAll(masters, j)
+    {
+        const label k = sf.masters.find(masters[j]);
+        if (k >= 0)
+        {
+            out[1 + j] = -sf.weights[k]*f;
+        }
+    }
+}
+
+
+//- Where slave face i's derivatives d with respect to face 'col' (of the
+//  slave if slaveCol, else of the master) go: output 0 is the slave
+//  face's row, output 1 + j master face masters[j]'s; a face's derivative
+//  with respect to itself is its own tangent, any other a coupling (the
+//  slave's column in its global face numbering [C14])
+struct pairDerivatives
+{
+    List<faceForceTangent>& slaveOwn;
+    List<faceForceTangent>& masterOwn;
+    DynamicList<faceCoupling>& slaveCoupling;
+    DynamicList<faceCoupling>& masterCoupling;
+    label slavePatch;
+    label masterPatch;
+    const globalIndex& slaveFaces;
+
+    void add
+    (
+        const label i,
+        const labelList& masters,
+        const bool slaveCol,
+        const label col,
+        const List<faceForceTangent>& d
+    ) const
+    {
+        forAll(d, o)
+        {
+            const bool slaveRow = o == 0;
+            const label row = slaveRow ? i : masters[o - 1];
+            if (slaveRow == slaveCol && row == col)
+            {
+                faceForceTangent& t = slaveRow ? slaveOwn[row] : masterOwn[row];
+                t.dfdD += d[o].dfdD;
+                for (direction r = 0; r < 3; ++r)
+                {
+                    t.dfdF[r] += d[o].dfdF[r];
+                }
+                continue;
+            }
+            faceCoupling e;
+            e.face = row;
+            e.patch = slaveCol ? slavePatch : masterPatch;
+            e.otherFace = slaveCol ? slaveFaces.toGlobal(col) : col;
+            e.df = d[o];
+            (slaveRow ? slaveCoupling : masterCoupling).append(e);
+        }
+    }
+};
+
 } // End namespace Foam
 
 
@@ -120,6 +198,75 @@ bool Foam::deformableContactFvPatchVectorField::takeCached
 }
 
 
+void Foam::deformableContactFvPatchVectorField::slaveFaceDerivatives
+(
+    const label i,
+    const slaveFace& base,
+    const contactSurface& master,
+    side& sl,
+    side& s,
+    const label fi,
+    const scalar deltaT,
+    List<faceForceTangent>& d
+) const
+{
+    const labelList& masters = base.masters;
+    const scalar hD = 1e-6*faceLength(s, fi);
+    const scalar hF = 1e-6;
+    const vector D0(s.D[fi]);
+    const tensor F0(s.F[fi]);
+
+    List<vector> outP;
+    List<vector> outM;
+    d.setSize(1 + masters.size());
+    d = faceForceTangent();
+    for (direction c = 0; c < 12; ++c)
+    {
+        const scalar h = c < 3 ? hD : hF;
+        for (const scalar sign : {1.0, -1.0})
+        {
+            if (c < 3)
+            {
+                s.D[fi] = D0;
+                s.D[fi][c] += sign*h;
+            }
+            else
+            {
+                s.F[fi] = F0;
+                s.F[fi][c - 3] += sign*h;
+            }
+            faceGeometry(s, fi);
+            slaveFace sf;
+            evaluateSlaveFace
+            (
+                i, master, sl.D[i] - sl.Dold[i], sl.area[i], deltaT, sf,
+                &base
+            );
+            pairOutputs(sf, masters, sign > 0 ? outP : outM);
+        }
+        s.D[fi] = D0;
+        s.F[fi] = F0;
+        faceGeometry(s, fi);
+
+        forAll(d, o)
+        {
+            const vector dOut((outP[o] - outM[o])/(2*h));
+            for (direction r = 0; r < 3; ++r)
+            {
+                if (c < 3)
+                {
+                    d[o].dfdD[3*r + c] = dOut[r];
+                }
+                else
+                {
+                    d[o].dfdF[r][c - 3] = dOut[r];
+                }
+            }
+        }
+    }
+}
+
+
 void Foam::deformableContactFvPatchVectorField::pairTangent
 (
     side& sl,
@@ -138,16 +285,9 @@ void Foam::deformableContactFvPatchVectorField::pairTangent
     // geometry with the law linear about its result (the law's consistent
     // tangent, [F7]): face-local, so a handful of face evaluations per
     // face and derivative
-    const deformableContactFvPatchVectorField& m = partner();
-    const label slavePatch = patch().index();
-    const label masterPatch = m.patch().index();
-    // a master row's column of slave face i: the slave's global face
-    // numbering (faceCoupling; i in serial) [C14]
-    const globalIndex slaveFaces(sl.X.size());
-
     labelListList cand;
     candidates(sl, ms, 0, cand);
-    // a view of sl and ms: sees the perturbations below
+    // a view of sl and ms: sees the perturbations of slaveFaceDerivatives
     const overlapContactSurface master(sl, ms, cand, searchDistance_);
 
     slaveOwn.setSize(sl.X.size());
@@ -156,31 +296,13 @@ void Foam::deformableContactFvPatchVectorField::pairTangent
     masterOwn = faceForceTangent();
     slaveCoupling.clear();
     masterCoupling.clear();
-
-    // the outputs of slave face i: f_s and -w_sm f_s for the base masters
-    auto outputs = [](const slaveFace& sf, const labelList& masters,
-        List<vector>& out)
+    const globalIndex slaveFaces(sl.X.size());
+    const pairDerivatives to
     {
-        out.setSize(1 + masters.size());
-        out = Zero;
-        if (!sf.inReach)
-        {
-            return;
-        }
-        const vector f(slaveForce(sf));
-        out[0] = f;
-        forAll(masters, j)
-        {
-            const label k = sf.masters.find(masters[j]);
-            if (k >= 0)
-            {
-                out[1 + j] = -sf.weights[k]*f;
-            }
-        }
+        slaveOwn, masterOwn, slaveCoupling, masterCoupling,
+        patch().index(), partner().patch().index(), slaveFaces
     };
 
-    List<vector> outP;
-    List<vector> outM;
     List<faceForceTangent> d;
     forAll(sl.X, i)
     {
@@ -194,91 +316,13 @@ void Foam::deformableContactFvPatchVectorField::pairTangent
             continue;
         }
         const labelList masters(base.masters);
-        const label nOut = 1 + masters.size();
 
-        // inputs: the slave face (-1) and its masters
-        for (label inp = -1; inp < masters.size(); ++inp)
+        slaveFaceDerivatives(i, base, master, sl, sl, i, deltaT, d);
+        to.add(i, masters, true, i, d);
+        for (const label mi : masters)
         {
-            side& s = inp < 0 ? sl : ms;
-            const label fi = inp < 0 ? i : masters[inp];
-            const scalar hD = 1e-6*faceLength(s, fi);
-            const scalar hF = 1e-6;
-            const vector D0(s.D[fi]);
-            const tensor F0(s.F[fi]);
-
-            d.setSize(nOut);
-            d = faceForceTangent();
-            for (direction c = 0; c < 12; ++c)
-            {
-                const scalar h = c < 3 ? hD : hF;
-                for (const scalar sign : {1.0, -1.0})
-                {
-                    if (c < 3)
-                    {
-                        s.D[fi] = D0;
-                        s.D[fi][c] += sign*h;
-                    }
-                    else
-                    {
-                        s.F[fi] = F0;
-                        s.F[fi][c - 3] += sign*h;
-                    }
-                    faceGeometry(s, fi);
-                    slaveFace sf;
-                    evaluateSlaveFace
-                    (
-                        i, master, sl.D[i] - sl.Dold[i], sl.area[i], deltaT,
-                        sf, &base
-                    );
-                    outputs(sf, masters, sign > 0 ? outP : outM);
-                }
-                s.D[fi] = D0;
-                s.F[fi] = F0;
-                faceGeometry(s, fi);
-
-                forAll(d, o)
-                {
-                    const vector dOut((outP[o] - outM[o])/(2*h));
-                    for (direction r = 0; r < 3; ++r)
-                    {
-                        if (c < 3)
-                        {
-                            d[o].dfdD[3*r + c] = dOut[r];
-                        }
-                        else
-                        {
-                            d[o].dfdF[r][c - 3] = dOut[r];
-                        }
-                    }
-                }
-            }
-
-            // distribute: output 0 is slave face i's row, output 1 + j
-            // master face masters[j]'s row
-            forAll(d, o)
-            {
-                const bool slaveRow = o == 0;
-                const label row = slaveRow ? i : masters[o - 1];
-                const bool slaveCol = inp < 0;
-                const label col = fi;
-                if (slaveRow == slaveCol && row == col)
-                {
-                    faceForceTangent& t =
-                        slaveRow ? slaveOwn[row] : masterOwn[row];
-                    t.dfdD += d[o].dfdD;
-                    for (direction r = 0; r < 3; ++r)
-                    {
-                        t.dfdF[r] += d[o].dfdF[r];
-                    }
-                    continue;
-                }
-                faceCoupling e;
-                e.face = row;
-                e.patch = slaveCol ? slavePatch : masterPatch;
-                e.otherFace = slaveCol ? slaveFaces.toGlobal(col) : col;
-                e.df = d[o];
-                (slaveRow ? slaveCoupling : masterCoupling).append(e);
-            }
+            slaveFaceDerivatives(i, base, master, sl, ms, mi, deltaT, d);
+            to.add(i, masters, false, mi, d);
         }
     }
     ++cost_.nTangent;
