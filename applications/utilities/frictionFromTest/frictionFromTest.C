@@ -197,6 +197,249 @@ void plot(const fileName& dir, const testMeasurements& meas)
     reportFiles::gnuplot(dir/"fit", os.str(), 900, 500*n);
 }
 
+
+//- The identification dictionary, its keywords checked
+dictionary readIdentificationDict
+(
+    const fileName& dictFile,
+    const fileName& casePath
+)
+{
+    // [S19b] a number its reading would stop on with SIGFPE
+    strictDictionary::checkNumberRange(dictFile);
+    IFstream is(dictFile);
+    if (!is.good())
+    {
+        FatalErrorInFunction
+            << "cannot open the identification dictionary " << dictFile
+            << " in " << casePath << exit(FatalError);
+    }
+    const dictionary dict(is);
+    strictDictionary::check
+    (
+        dict,
+        {
+            "FoamFile", "frictionLaw", "parameters", "stages", "lawFile",
+            "postProcess", "measurements", "confidenceLevel", "relativeStep",
+            "tolerance", "maxEvaluations", "nParallelRuns"
+        },
+        "frictionFromTest"
+    );
+    return dict;
+}
+
+
+//- The model cases of the stages, coarse first: each must exist
+fileNameList readStages(const dictionary& dict, const fileName& casePath)
+{
+    const fileNameList stages(dict.get<fileNameList>("stages"));
+    if (stages.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "keyword 'stages': at least one model case expected"
+            << exit(FatalIOError);
+    }
+    for (const fileName& s : stages)
+    {
+        if (!isDir(fileName(s).expand()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "keyword 'stages': no case folder " << s << " (in "
+                << casePath << ")" << exit(FatalIOError);
+        }
+    }
+    return stages;
+}
+
+
+//- The start values, which the law must accept before anything runs
+scalarList startValues(simulationModel& model, const dictionary& dict)
+{
+    const scalarList p0(model.start(dict));
+    std::string why;
+    if (!model.lawAccepts(p0, why))
+    {
+        FatalIOErrorInFunction(dict.subDict("frictionLaw"))
+            << "the start values: " << why.c_str() << exit(FatalIOError);
+    }
+    return p0;
+}
+
+
+//- [F41] Each stage fitted from the last one's answer (coarse mesh first):
+//  the last stage's result; p its values, lastStart its start
+testIdentification::result fitStages
+(
+    simulationModel& model,
+    const fileNameList& stages,
+    const scalarField& y,
+    const scalarField& sd,
+    const testIdentification::settings& set,
+    scalarList& p,
+    scalarList& lastStart
+)
+{
+    testIdentification::result res;
+    forAll(stages, k)
+    {
+        model.setCase(fileName(stages[k]).expand());
+        Info<< "Stage " << k + 1 << ": " << stages[k] << endl;
+        testIdentification id(model, y, sd, set);
+        lastStart = p;
+        res = id.fit(p);
+        report(model.names(), res, set.confidence);
+        p = res.value;
+        // The stage's run at its fit, for ParaView
+        if (k + 1 < stages.size())
+        {
+            model.keep(p, "fit");
+        }
+        Info<< endl;
+    }
+    return res;
+}
+
+
+//- <series>.dat: the model's response curve of each curve series at the
+//  fit (read from the run kept in fitDir)
+void writeResponseCurves
+(
+    const fileName& outDir,
+    const testMeasurements& meas,
+    const fileName& fitDir
+)
+{
+    for (const testMeasurements::series& s : meas.all())
+    {
+        if (!s.responseEntry.empty())
+        {
+            continue;
+        }
+        const List<scalarList> xy(meas.responseTable(s, fitDir));
+        OFstream os(outDir/(s.name + ".dat"));
+        os.precision(10);
+        os  << "# the model at the fit: column " << s.responseColumns.first()
+            << " and " << s.responseColumns.second() << " of "
+            << s.response << nl;
+        forAll(xy[0], i)
+        {
+            os  << xy[0][i] << ' ' << xy[1][i] << nl;
+        }
+        reportFiles::checkWritten(os);
+    }
+}
+
+
+//- fittedLawDict: the law at the fit, its intervals as comments
+void writeFittedLaw
+(
+    const fileName& file,
+    const simulationModel& model,
+    const testIdentification::result& res,
+    const scalar confidence
+)
+{
+    OFstream os(file);
+    os.precision(10);
+    os  << "// Identified by frictionFromTest (doc/theory.md [F41])" << nl;
+    forAll(model.names(), j)
+    {
+        os  << "// " << model.names()[j] << " = " << res.value[j]
+            << " +- " << res.halfWidth[j] << " ("
+            << label(std::round(100*confidence))
+            << " % interval; start " << res.start[j] << ")" << nl;
+    }
+    model.lawDict(res.value).write(os, false);
+    reportFiles::checkWritten(os);
+}
+
+
+//- The bootstrap: nBoot synthetic sets, the model at the fit plus noise of
+//  each point's sigma, fitted from the fit; bootstrap.dat; the number of
+//  sets whose intervals cover the fit in every parameter
+label bootstrap
+(
+    const fileName& file,
+    simulationModel& model,
+    const scalarField& fittedValues,
+    const scalarField& sd,
+    const testIdentification::settings& set,
+    const testIdentification::result& res,
+    const label nBoot,
+    const label seed
+)
+{
+    Random rnd(seed);
+    OFstream os(file);
+    os.precision(10);
+    os  << "# set, per parameter: value halfWidth covered" << nl;
+    Info<< "Bootstrap: " << nBoot << " sets, noise of sigma" << endl;
+    label covered = 0;
+    for (label b = 0; b < nBoot; ++b)
+    {
+        scalarField yb(fittedValues);
+        forAll(yb, i)
+        {
+            yb[i] += sd[i]*rnd.GaussNormal<scalar>();
+        }
+        testIdentification id(model, yb, sd, set);
+        const testIdentification::result rb = id.fit(res.value);
+        bool all = true;
+        os  << b + 1;
+        forAll(rb.value, j)
+        {
+            const bool c = mag(rb.value[j] - res.value[j]) <= rb.halfWidth[j];
+            all = all && c;
+            os  << ' ' << rb.value[j] << ' ' << rb.halfWidth[j] << ' ' << c;
+        }
+        os  << nl;
+        covered += all;
+        Info<< "    set " << b + 1 << ":";
+        forAll(rb.value, j)
+        {
+            Info<< ' ' << model.names()[j] << ' ' << rb.value[j]
+                << " +- " << rb.halfWidth[j];
+        }
+        Info<< (all ? " covers" : " misses") << " the fit" << endl;
+    }
+    reportFiles::checkWritten(os);
+    Info<< "Bootstrap: the intervals cover the fit in " << covered
+        << " of " << nBoot << " sets" << nl << endl;
+    return covered;
+}
+
+
+//- summary.dat: the values and half-widths, the cost, the bootstrap's
+//  coverage
+void writeSummary
+(
+    const fileName& file,
+    const simulationModel& model,
+    const testIdentification::result& res,
+    const scalar wallTime,
+    const label nBoot,
+    const label covered
+)
+{
+    OFstream os(file);
+    os.precision(10);
+    forAll(model.names(), j)
+    {
+        os  << model.names()[j] << ' ' << res.value[j] << nl
+            << model.names()[j] << "HalfWidth " << res.halfWidth[j] << nl;
+    }
+    os  << "rms " << res.rms << nl
+        << "evaluations " << res.nEvaluations << nl
+        << "runs " << model.nRuns() << nl
+        << "wallTime " << wallTime << nl;
+    if (nBoot > 0)
+    {
+        os  << "bootstrapSets " << nBoot << nl
+            << "bootstrapCovered " << covered << nl;
+    }
+    reportFiles::checkWritten(os);
+}
+
 }
 
 
@@ -232,29 +475,13 @@ int main(int argc, char *argv[])
         FatalErrorInFunction
             << "cannot change to the case " << args.path() << exit(FatalError);
     }
-    const fileName dictFile
+    const dictionary dict
     (
-        args.getOrDefault<fileName>("dict", "system/frictionFromTestDict")
-    );
-    // [S19b] a number its reading would stop on with SIGFPE
-    strictDictionary::checkNumberRange(dictFile);
-    IFstream is(dictFile);
-    if (!is.good())
-    {
-        FatalErrorInFunction
-            << "cannot open the identification dictionary " << dictFile
-            << " in " << args.path() << exit(FatalError);
-    }
-    const dictionary dict(is);
-    strictDictionary::check
-    (
-        dict,
-        {
-            "FoamFile", "frictionLaw", "parameters", "stages", "lawFile",
-            "postProcess", "measurements", "confidenceLevel", "relativeStep",
-            "tolerance", "maxEvaluations", "nParallelRuns"
-        },
-        "frictionFromTest"
+        readIdentificationDict
+        (
+            args.getOrDefault<fileName>("dict", "system/frictionFromTestDict"),
+            args.path()
+        )
     );
     const label nBoot = args.getOrDefault<label>("bootstrap", 0);
     if (nBoot < 0)
@@ -270,34 +497,8 @@ int main(int argc, char *argv[])
     mkDir(outDir);
     simulationModel model(dict, meas, outDir, args.found("keepRuns"));
     const testIdentification::settings set(readSettings(dict));
-
-    const fileNameList stages(dict.get<fileNameList>("stages"));
-    if (stages.empty())
-    {
-        FatalIOErrorInFunction(dict)
-            << "keyword 'stages': at least one model case expected"
-            << exit(FatalIOError);
-    }
-    for (const fileName& s : stages)
-    {
-        if (!isDir(fileName(s).expand()))
-        {
-            FatalIOErrorInFunction(dict)
-                << "keyword 'stages': no case folder " << s << " (in "
-                << args.path() << ")" << exit(FatalIOError);
-        }
-    }
-
-    // The law must accept the start values before anything runs
-    const scalarList p0(model.start(dict));
-    {
-        std::string why;
-        if (!model.lawAccepts(p0, why))
-        {
-            FatalIOErrorInFunction(dict.subDict("frictionLaw"))
-                << "the start values: " << why.c_str() << exit(FatalIOError);
-        }
-    }
+    const fileNameList stages(readStages(dict, args.path()));
+    const scalarList p0(startValues(model, dict));
 
     Info<< "frictionFromTest: " << model.names() << " of law "
         << dict.subDict("frictionLaw").get<word>("type") << " from "
@@ -306,128 +507,33 @@ int main(int argc, char *argv[])
 
     clockTime clock;
     scalarList p(p0);
-    testIdentification::result res;
-    // The start of the last stage (its runs are cached)
-    scalarList stageStart(p0);
-    const scalarField y(meas.measured());
+    scalarList lastStart(p0);
     const scalarField sd(meas.sigma());
-    forAll(stages, k)
-    {
-        model.setCase(fileName(stages[k]).expand());
-        Info<< "Stage " << k + 1 << ": " << stages[k] << endl;
-        testIdentification id(model, y, sd, set);
-        stageStart = p;
-        res = id.fit(p);
-        report(model.names(), res, set.confidence);
-        p = res.value;
-        // The stage's run at its fit, for ParaView
-        if (k + 1 < stages.size())
-        {
-            model.keep(p, "fit");
-        }
-        Info<< endl;
-    }
+    const testIdentification::result res =
+        fitStages(model, stages, meas.measured(), sd, set, p, lastStart);
 
-    // The last stage: the model at its start and at the fit, its curves
+    // The last stage: the model at its start and at the fit (its runs are
+    // cached), its curves
     const simulationModel::run start =
-        model.evaluate(List<scalarList>(1, stageStart))[0];
+        model.evaluate(List<scalarList>(1, lastStart))[0];
     const simulationModel::run fitted = model.keep(p, "fit");
     writeFitTable(outDir/"fit.dat", meas, start.values, fitted.values);
-    for (const testMeasurements::series& s : meas.all())
-    {
-        if (!s.responseEntry.empty())
-        {
-            continue;
-        }
-        const List<scalarList> xy(meas.responseTable(s, fitted.dir));
-        OFstream os(outDir/(s.name + ".dat"));
-        os.precision(10);
-        os  << "# the model at the fit: column " << s.responseColumns.first()
-            << " and " << s.responseColumns.second() << " of "
-            << s.response << nl;
-        forAll(xy[0], i)
-        {
-            os  << xy[0][i] << ' ' << xy[1][i] << nl;
-        }
-        reportFiles::checkWritten(os);
-    }
-    {
-        OFstream os(outDir/"fittedLawDict");
-        os.precision(10);
-        os  << "// Identified by frictionFromTest (doc/theory.md [F41])" << nl;
-        forAll(model.names(), j)
-        {
-            os  << "// " << model.names()[j] << " = " << res.value[j]
-                << " +- " << res.halfWidth[j] << " ("
-                << label(std::round(100*set.confidence))
-                << " % interval; start " << res.start[j] << ")" << nl;
-        }
-        model.lawDict(res.value).write(os, false);
-        reportFiles::checkWritten(os);
-    }
+    writeResponseCurves(outDir, meas, fitted.dir);
+    writeFittedLaw(outDir/"fittedLawDict", model, res, set.confidence);
 
-    // The bootstrap: synthetic measurements around the fit
-    label covered = 0;
-    if (nBoot > 0)
-    {
-        Random rnd(args.getOrDefault<label>("seed", 1));
-        OFstream os(outDir/"bootstrap.dat");
-        os.precision(10);
-        os  << "# set, per parameter: value halfWidth covered" << nl;
-        Info<< "Bootstrap: " << nBoot << " sets, noise of sigma" << endl;
-        for (label b = 0; b < nBoot; ++b)
-        {
-            scalarField yb(fitted.values);
-            forAll(yb, i)
-            {
-                yb[i] += sd[i]*rnd.GaussNormal<scalar>();
-            }
-            testIdentification id(model, yb, sd, set);
-            const testIdentification::result rb = id.fit(res.value);
-            bool all = true;
-            os  << b + 1;
-            forAll(rb.value, j)
-            {
-                const bool c =
-                    mag(rb.value[j] - res.value[j]) <= rb.halfWidth[j];
-                all = all && c;
-                os  << ' ' << rb.value[j] << ' ' << rb.halfWidth[j] << ' '
-                    << c;
-            }
-            os  << nl;
-            covered += all;
-            Info<< "    set " << b + 1 << ":";
-            forAll(rb.value, j)
-            {
-                Info<< ' ' << model.names()[j] << ' ' << rb.value[j]
-                    << " +- " << rb.halfWidth[j];
-            }
-            Info<< (all ? " covers" : " misses") << " the fit" << endl;
-        }
-        reportFiles::checkWritten(os);
-        Info<< "Bootstrap: the intervals cover the fit in " << covered
-            << " of " << nBoot << " sets" << nl << endl;
-    }
+    const label covered =
+        nBoot > 0
+      ? bootstrap
+        (
+            outDir/"bootstrap.dat", model, fitted.values, sd, set, res, nBoot,
+            args.getOrDefault<label>("seed", 1)
+        )
+      : 0;
 
-    {
-        OFstream os(outDir/"summary.dat");
-        os.precision(10);
-        forAll(model.names(), j)
-        {
-            os  << model.names()[j] << ' ' << res.value[j] << nl
-                << model.names()[j] << "HalfWidth " << res.halfWidth[j] << nl;
-        }
-        os  << "rms " << res.rms << nl
-            << "evaluations " << res.nEvaluations << nl
-            << "runs " << model.nRuns() << nl
-            << "wallTime " << clock.elapsedTime() << nl;
-        if (nBoot > 0)
-        {
-            os  << "bootstrapSets " << nBoot << nl
-                << "bootstrapCovered " << covered << nl;
-        }
-        reportFiles::checkWritten(os);
-    }
+    writeSummary
+    (
+        outDir/"summary.dat", model, res, clock.elapsedTime(), nBoot, covered
+    );
     plot(outDir, meas);
 
     Info<< "frictionFromTest: " << model.nRuns() << " runs, "
