@@ -14,25 +14,20 @@ License
 #include "solidRestartState.H"
 #include "volFields.H"
 #include "IOdictionary.H"
-#include "bodyLaws.H"
 #include "vonMisesPlastic.H"
 #include "surfaceFields.H"
-#include "emptyFvPatch.H"
 #include "strictDictionary.H"
 #include "frictionParameters.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::scalar Foam::contactFaces::cellStiffness(const fvPatch& p)
+Foam::scalar Foam::contactFaces::cellStiffness(const fvPatch& p) const
 {
     // [C5] E'/h of the body that holds the patch's cells [C9], h the mean
     // depth V/|S| of those cells
     const fvMesh& mesh = p.boundaryMesh().mesh();
     const labelUList& fc = p.faceCells();
-    const scalar Eprime = bodyLaws::planeStrainModulus
-    (
-        mesh.lookupObject<IOdictionary>("mechanicalProperties"), mesh, fc
-    );
+    const scalar Eprime = body().planeStrainModulus(fc);
 
     const scalarField& V = mesh.V();
     const scalarField& magSf = p.magSf();
@@ -80,7 +75,6 @@ void Foam::contactFaces::createLaw() const
     law_ = frictionLaw::New(dict);
     effectiveLawDict_ = dict;
     layout_ = law_->stateLayout();
-    createBodyLaw();
 
     Info<< contactType() << " on patch " << contactPatch().name() << ": law "
         << lawDict_.get<word>("type") << ", KN " << law_->KN()
@@ -89,11 +83,11 @@ void Foam::contactFaces::createLaw() const
 }
 
 
-void Foam::contactFaces::createBodyLaw() const
+void Foam::contactFaces::findFlowLaw()
 {
-    bodyLaw_.clear();
+    flowLaw_ = nullptr;
     shearYieldTimeIndex_ = -1;
-    if (!law_->needsShearYield())
+    if (!law().needsShearYield())
     {
         return;
     }
@@ -101,22 +95,23 @@ void Foam::contactFaces::createBodyLaw() const
     // [F35] k comes from the mechanical law of the body that holds the
     // patch's cells: only a plastic one has a flow stress
     const fvPatch& p = contactPatch();
-    const fvMesh& mesh = p.boundaryMesh().mesh();
-    const IOdictionary& mp =
-        mesh.lookupObject<IOdictionary>("mechanicalProperties");
     const labelUList& fc = p.faceCells();
     word lawType("none");
     if (fc.size())
     {
-        bodyLaw_ = mechanicalLaw::New(bodyLaws::lawDict(mp, mesh, fc[0]));
-        lawType = bodyLaw_->type();
-        if (!isA<mechanicalLaws::vonMisesPlastic>(bodyLaw_()))
-        {
-            bodyLaw_.clear();
-        }
+        const mechanicalLaw& cellLaw = body_->cellLaw(fc[0]);
+        lawType = cellLaw.type();
+        flowLaw_ = isA<mechanicalLaws::vonMisesPlastic>(cellLaw)
+          ? &refCast<const mechanicalLaws::vonMisesPlastic>(cellLaw)
+          : nullptr;
     }
-    if (returnReduce(fc.size() && !bodyLaw_.valid(), orOp<bool>()))
+    if (returnReduce(fc.size() && !flowLaw_, orOp<bool>()))
     {
+        const IOdictionary& mp =
+            p.boundaryMesh().mesh().lookupObject<IOdictionary>
+            (
+                "mechanicalProperties"
+            );
         FatalIOErrorInFunction(mp)
             << "patch " << p.name() << ": friction law "
             << lawDict_.get<word>("type") << " needs the shear flow stress"
@@ -130,56 +125,9 @@ void Foam::contactFaces::createBodyLaw() const
 }
 
 
-Foam::tmp<Foam::scalarField> Foam::contactFaces::cellPlasticStrain
-(
-    const surfaceScalarField& epsilonPf
-) const
-{
-    // [F35] the plastic history lives on faces ([S9]); a cell's equivalent
-    // plastic strain is the area-weighted mean over its faces that carry
-    // one (internal faces and boundary faces that are not force
-    // boundaries, as the solver's epsilonPEq output)
-    const fvPatch& p = contactPatch();
-    const fvMesh& mesh = p.boundaryMesh().mesh();
-    const volVectorField& D = mesh.lookupObject<volVectorField>("D");
-    const polyBoundaryMesh& pbm = mesh.boundaryMesh();
-    const scalarField& magSf = mesh.magSf();
-    const labelUList& fc = p.faceCells();
-
-    tmp<scalarField> teps(new scalarField(fc.size(), 0));
-    scalarField& eps = teps.ref();
-    forAll(fc, i)
-    {
-        scalar sumA = 0;
-        scalar sumE = 0;
-        for (const label f : mesh.cells()[fc[i]])
-        {
-            if (mesh.isInternalFace(f))
-            {
-                sumA += magSf[f];
-                sumE += magSf[f]*epsilonPf[f];
-                continue;
-            }
-            const label patchi = pbm.whichPatch(f);
-            const fvPatchVectorField& Dp = D.boundaryField()[patchi];
-            if (isA<emptyFvPatch>(Dp.patch()) || isA<solidForceBoundary>(Dp))
-            {
-                continue;
-            }
-            const label j = f - pbm[patchi].start();
-            const scalar a = mesh.magSf().boundaryField()[patchi][j];
-            sumA += a;
-            sumE += a*epsilonPf.boundaryField()[patchi][j];
-        }
-        eps[i] = sumE/max(sumA, VSMALL);
-    }
-    return teps;
-}
-
-
 Foam::scalar Foam::contactFaces::shearYield(const label i) const
 {
-    if (!bodyLaw_.valid())
+    if (!flowLaw_)
     {
         return -1;
     }
@@ -191,20 +139,12 @@ Foam::scalar Foam::contactFaces::shearYield(const label i) const
     const label timeIndex = mesh.time().timeIndex();
     if (timeIndex != shearYieldTimeIndex_ || shearYield_.size() != p.size())
     {
-        const mechanicalLaws::vonMisesPlastic& vm =
-            refCast<const mechanicalLaws::vonMisesPlastic>(bodyLaw_());
-        scalarField epsP(p.size(), 0);
-        if (mesh.foundObject<surfaceScalarField>("epsilonPf"))
-        {
-            epsP = cellPlasticStrain
-            (
-                mesh.lookupObject<surfaceScalarField>("epsilonPf")
-            );
-        }
+        const scalarField epsP(body_->cellPlasticStrain(p.faceCells()));
         shearYield_.setSize(p.size());
         forAll(epsP, facei)
         {
-            shearYield_[facei] = vm.yieldStress(epsP[facei])/std::sqrt(3.0);
+            shearYield_[facei] =
+                flowLaw_->yieldStress(epsP[facei])/std::sqrt(3.0);
         }
         shearYieldTimeIndex_ = timeIndex;
     }
@@ -249,7 +189,10 @@ void Foam::contactFaces::readState
 }
 
 
-void Foam::contactFaces::requireState(const dictionary& dict) const
+Foam::wordList Foam::contactFaces::missingState
+(
+    const dictionary& dict
+) const
 {
     // [S19b] at a restart every entry of the face state written with the
     // time: the law's state, the face displacement, the dissipated
@@ -278,24 +221,62 @@ void Foam::contactFaces::requireState(const dictionary& dict) const
             missing.append(key);
         }
     }
-    if (missing.size())
+    return wordList(missing);
+}
+
+
+void Foam::contactFaces::checkRestartState() const
+{
+    if (missingState_.empty())
     {
-        const Time& runTime = contactPatch().boundaryMesh().mesh().time();
-        FatalIOErrorInFunction(dict)
-            << "Restart from time " << runTime.timeName() << ": patch "
-            << contactPatch().name() << " in " << dict.name() << " has no "
-            << (missing.size() > 1 ? "keywords" : "keyword");
-        for (const word& key : missing)
+        return;
+    }
+    const Time& runTime = contactPatch().boundaryMesh().mesh().time();
+    FatalIOErrorInFunction(settings_)
+        << "Restart from time " << runTime.timeName() << ": patch "
+        << contactPatch().name() << " in " << settings_.name() << " has no "
+        << (missingState_.size() > 1 ? "keywords" : "keyword");
+    for (const word& key : missingState_)
+    {
+        FatalIOError<< " '" << key.c_str() << "'";
+    }
+    FatalIOError
+        << ", the face state of the contact (law "
+        << lawDict_.get<word>("type") << ") written with every time"
+        << " directory, which the next step starts from. The time"
+        << " directory " << runTime.timePath() << " was edited or"
+        << " written by another law; restore it, or restart from another"
+        << " complete time" << nl << exit(FatalIOError);
+}
+
+
+void Foam::contactFaces::checkPenaltyScales() const
+{
+    // [C5] an automatic penalty (scale x the cells' stiffness) that a
+    // friction law can hold [F2b]: a scale beyond it refused where it was
+    // written (the product would overflow)
+    const scalar k = automaticPenalty(1);
+    const scalar kMax = frictionParameters::representable.second();
+    const Pair<word> keys("penaltyScale", "tangentialPenaltyScale");
+    const Pair<word> lawKeys("KN", "KT");
+    const Pair<scalar> scales(penaltyScale_, tangentialPenaltyScale_);
+    for (label s = 0; s < 2; ++s)
+    {
+        if
+        (
+            !lawDict_.found(lawKeys[s]) && k > 1e-270
+         && !(scales[s] <= kMax/k)
+        )
         {
-            FatalIOError<< " '" << key.c_str() << "'";
+            FatalIOErrorInFunction(settings_)
+                << "Keyword '" << keys[s] << "' in dictionary "
+                << settings_.name() << " is " << scales[s] << ": the"
+                << " automatic penalty " << lawKeys[s] << " = "
+                << keys[s] << " x " << k << " Pa/m (the cells'"
+                << " stiffness) would exceed " << kMax << " Pa/m, the"
+                << " largest a friction law keeps finite" << nl
+                << exit(FatalIOError);
         }
-        FatalIOError
-            << ", the face state of the contact (law "
-            << lawDict_.get<word>("type") << ") written with every time"
-            << " directory, which the next step starts from. The time"
-            << " directory " << runTime.timePath() << " was edited or"
-            << " written by another law; restore it, or restart from another"
-            << " complete time" << nl << exit(FatalIOError);
     }
 }
 
@@ -427,46 +408,10 @@ void Foam::contactFaces::readContactFaces(const dictionary& dict)
             << nl << exit(FatalIOError);
     }
 
-    // The law needs the solid's moduli for automatic penalties; utilities
-    // such as decomposePar read D without them and only copy the entries,
-    // for which the law's state layout is enough (penalties do not change
-    // it)
-    if (p.boundaryMesh().mesh().foundObject<IOdictionary>("mechanicalProperties"))
-    {
-        // [C5] an automatic penalty (scale x the cells' stiffness) that
-        // a friction law can hold [F2b]: a scale beyond it refused here,
-        // where it was written (the product would overflow)
-        const scalar k = automaticPenalty(1);
-        const scalar kMax = frictionParameters::representable.second();
-        const Pair<word> keys("penaltyScale", "tangentialPenaltyScale");
-        const Pair<word> lawKeys("KN", "KT");
-        const Pair<scalar> scales(penaltyScale_, tangentialPenaltyScale_);
-        for (label s = 0; s < 2; ++s)
-        {
-            if
-            (
-                !lawDict_.found(lawKeys[s]) && k > 1e-270
-             && !(scales[s] <= kMax/k)
-            )
-            {
-                FatalIOErrorInFunction(dict)
-                    << "Keyword '" << keys[s] << "' in dictionary "
-                    << dict.name() << " is " << scales[s] << ": the"
-                    << " automatic penalty " << lawKeys[s] << " = "
-                    << keys[s] << " x " << k << " Pa/m (the cells'"
-                    << " stiffness) would exceed " << kMax << " Pa/m, the"
-                    << " largest a friction law keeps finite" << nl
-                    << exit(FatalIOError);
-            }
-        }
-        createLaw();
-        if (solidRestartState::expected(p.boundaryMesh().mesh().time()))
-        {
-            requireState(dict);
-        }
-        readState(dict, law_());
-    }
-    else
+    // The law's state layout and the face state (a restart's) need no
+    // penalties; the law with its penalties is made when the solid is
+    // attached (attachBody: its moduli). Utilities such as decomposePar
+    // read D without a solid and only copy the entries
     {
         dictionary d(lawDict_);
         d.set("KN", 1.0);
@@ -475,6 +420,50 @@ void Foam::contactFaces::readContactFaces(const dictionary& dict)
         layout_ = layoutLaw->stateLayout();
         readState(dict, layoutLaw());
     }
+    missingState_ =
+        solidRestartState::expected(p.boundaryMesh().mesh().time())
+      ? missingState(dict)
+      : wordList();
+
+    // what the checks at attachBody name: the settings as written, without
+    // the face state
+    settings_ = dict;
+    for (const word& key : layout_.keywords())
+    {
+        settings_.remove(key);
+    }
+    for (const word& key : {"value", "dissipatedEnergy", "normalMultiplier"})
+    {
+        settings_.remove(key);
+    }
+}
+
+
+void Foam::contactFaces::attachBody(const solidBody& body)
+{
+    body_ = &body;
+    // (the master of a deformable pair carries no law)
+    if (lawDict_.empty())
+    {
+        return;
+    }
+    checkPenaltyScales();
+    checkRestartState();
+    createLaw();
+    findFlowLaw();
+}
+
+
+const Foam::solidBody& Foam::contactFaces::body() const
+{
+    if (!body_)
+    {
+        FatalErrorInFunction
+            << "patch " << contactPatch().name() << ": the contact is used"
+            << " outside the solid solver (no solid attached)"
+            << exit(FatalError);
+    }
+    return *body_;
 }
 
 
@@ -499,11 +488,11 @@ void Foam::contactFaces::copyContactFaces(const contactFaces& ptf)
     if (ptf.law_.valid())
     {
         law_ = frictionLaw::New(effectiveLawDict_);
-        if (ptf.bodyLaw_.valid())
-        {
-            createBodyLaw();
-        }
     }
+    body_ = ptf.body_;
+    flowLaw_ = ptf.flowLaw_;
+    settings_ = ptf.settings_;
+    missingState_ = ptf.missingState_;
     penaltyScale_ = ptf.penaltyScale_;
     tangentialPenaltyScale_ = ptf.tangentialPenaltyScale_;
     contactSmoothing_ = ptf.contactSmoothing_;
@@ -608,6 +597,8 @@ Foam::contactFaces::contactFaces()
     augmentTolerance_(0),
     augmentMaxIterations_(0),
     nAugmentations_(0),
+    body_(nullptr),
+    flowLaw_(nullptr),
     shearYieldTimeIndex_(-1),
     linearised_(false)
 {

@@ -257,19 +257,13 @@ void Foam::deformableContactFvPatchVectorField::committedKinematics
 
 void Foam::deformableContactFvPatchVectorField::kinematics(side& s) const
 {
-    // The solver's iterate (solidDiscretisation's working fields): face
-    // value extrapolated from the cell with its gradient, F = I + G^T [C2]
-    const volVectorField& u = db().lookupObject<volVectorField>("Dwork");
-    const volTensorField& G = db().lookupObject<volTensorField>("gradDwork");
-    const labelUList& fc = patch().faceCells();
-    const vectorField& C = patch().boundaryMesh().mesh().C();
-
+    // The solver's iterate: the solid's face kinematics of this force
+    // patch [C2], the same the solver hands the patch
     s.X = patch().Cf();
     s.S0 = patch().Sf();
     s.Dold = *this;
-    const label n = fc.size();
-    s.D.setSize(n);
-    s.F.setSize(n);
+    body().forcePatchKinematics(patch().index(), s.D, s.F);
+    const label n = s.D.size();
     s.a.setSize(n);
     s.b.setSize(n);
     s.area.setSize(n);
@@ -278,11 +272,8 @@ void Foam::deformableContactFvPatchVectorField::kinematics(side& s) const
     s.Xb = Xb_;
     s.Xv = Xv_;
     s.v = Xv_;
-    forAll(fc, i)
+    for (label i = 0; i < n; ++i)
     {
-        const tensor& Gi = G[fc[i]];
-        s.D[i] = u[fc[i]] + ((s.X[i] - C[fc[i]]) & Gi);
-        s.F[i] = tensor::I + Gi.T();
         faceGeometry(s, i);
     }
 }

@@ -181,25 +181,24 @@ const Foam::dictionary& Foam::bodyLaws::lawDict
 }
 
 
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
 Foam::scalar Foam::bodyLaws::planeStrainModulus
 (
-    const dictionary& mechanicalProperties,
-    const polyMesh& mesh,
     const labelUList& cells
-)
+) const
 {
+    // a processor without cells of the patch gives no modulus, unless there
+    // is one body
     scalar Eprime = -1;
-    if (cells.size() || !mechanicalProperties.found("bodies"))
+    if (cells.size() || laws_.size() == 1)
     {
-        const dictionary& d =
-            lawDict(mechanicalProperties, mesh, cells.size() ? cells[0] : 0);
-        Eprime = d.get<scalar>("E")/(1 - sqr(d.get<scalar>("nu")));
+        const mechanicalLaw& l = cells.size() ? cellLaw(cells[0]) : laws_[0];
+        Eprime = l.E()/(1 - sqr(l.nu()));
     }
     return returnReduce(Eprime, maxOp<scalar>());
 }
 
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 bool Foam::bodyLaws::plastic() const
 {

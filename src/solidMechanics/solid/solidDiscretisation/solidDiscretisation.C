@@ -469,6 +469,15 @@ Foam::solidDiscretisation::solidDiscretisation
           : tmp<vectorField>(p.Cf() - p.Cn());
         patchNormal_[patchi] = p.nf();
     }
+    // The force boundaries get the solid they load before anything asks
+    // them for a force (the coupling stencils below already do)
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (bcs_.kind(patchi) == solidBoundaries::FORCE)
+        {
+            bcs_.forcePatch(patchi).attach(*this);
+        }
+    }
     gatherCouplingStencils();
 
     // Constructing from a tmp drops the write option: set it here so the
@@ -944,6 +953,45 @@ void Foam::solidDiscretisation::reportForcePatches() const
         const solidPatchKinematics& k = fk.k;
         bcs_.forcePatch(patchi).report(k);
     }
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::solidDiscretisation::cellPlasticStrain
+(
+    const labelUList& cells
+) const
+{
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+    const surfaceScalarField& magSf = mesh_.magSf();
+
+    tmp<scalarField> teps(new scalarField(cells.size(), 0));
+    scalarField& eps = teps.ref();
+    forAll(cells, i)
+    {
+        scalar sumA = 0;
+        scalar sumE = 0;
+        for (const label f : mesh_.cells()[cells[i]])
+        {
+            if (mesh_.isInternalFace(f))
+            {
+                sumA += magSf[f];
+                sumE += magSf[f]*epsilonPf_[f];
+                continue;
+            }
+            const label patchi = pbm.whichPatch(f);
+            const solidBoundaries::patchKind kind = bcs_.kind(patchi);
+            if (kind == solidBoundaries::FORCE || kind == solidBoundaries::EMPTY)
+            {
+                continue;
+            }
+            const label j = f - pbm[patchi].start();
+            const scalar a = magSf.boundaryField()[patchi][j];
+            sumA += a;
+            sumE += a*epsilonPf_.boundaryField()[patchi][j];
+        }
+        eps[i] = sumE/max(sumA, VSMALL);
+    }
+    return teps;
 }
 
 
