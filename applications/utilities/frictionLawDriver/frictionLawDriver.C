@@ -52,31 +52,15 @@ Usage
 
 using namespace Foam;
 
-int main(int argc, char *argv[])
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
 {
-    argList::addNote
-    (
-        "The friction laboratory: drive a point-wise friction law (slip-rate"
-        " history, spring-slider), its stability, identification, friction"
-        " map and parameter fit; writes a table and a PNG plot"
-    );
-    argList::noParallel();
-    argList::noFunctionObjects();
-    argList::noCheckProcessorDirectories();
-    argList::addOption
-    (
-        "dict",
-        "file",
-        "driver dictionary (default: frictionLawDriverDict)"
-    );
 
-    argList args(argc, argv);
-
-    const fileName dictFile
-    (
-        args.getOrDefault<fileName>("dict", "frictionLawDriverDict")
-    );
-    // [S19b] a number its reading would stop on with SIGFPE
+//- The driver dictionary (a number its reading would stop on with SIGFPE
+//  refused first, [S19b])
+dictionary readDriverDict(const fileName& dictFile)
+{
     strictDictionary::checkNumberRange(dictFile);
     IFstream is(dictFile);
     if (!is.good())
@@ -85,17 +69,14 @@ int main(int argc, char *argv[])
             << "cannot open driver dictionary " << dictFile
             << exit(FatalError);
     }
-    const dictionary dict(is);
+    return dictionary(is);
+}
 
-    const word mode(dict.get<word>("mode"));
-    const fileName output
-    (
-        dict.getOrDefault<fileName>("output", "frictionLawDriver.dat")
-    );
-    reportFiles::checkWritable(dict, "output", output);
 
-    // Strict keywords (strictDictionary.H): the driver's own, and those of
-    // the sub-dictionary of each mode (the law checks its own)
+//- Strict keywords (strictDictionary.H): the driver's own, and those of
+//  the sub-dictionary of each mode (the law checks its own)
+void checkKeywords(const dictionary& dict)
+{
     const HashTable<wordList> modeKeywords
     ({
         {"prescribed", {"slipRate", "slipRateCoeffs", "runInTime"}},
@@ -150,46 +131,97 @@ int main(int argc, char *argv[])
             );
         }
     }
+}
 
-    // Modes that build their laws themselves (or need none)
+
+//- The mode's run: modes that build their laws themselves (or need none),
+//  then those that drive the dictionary's law
+void runMode(const dictionary& dict, const word& mode, const fileName& output)
+{
     if (mode == "identification")
     {
         driverModes::identification(dict, output);
+        return;
     }
-    else if (mode == "frictionMap")
+    if (mode == "frictionMap")
     {
         driverModes::frictionMap(dict, output);
+        return;
     }
-    else if (mode == "fit")
+    if (mode == "fit")
     {
         driverModes::fit(dict, output);
+        return;
+    }
+    autoPtr<frictionLaw> law = frictionLaw::New(dict.subDict("law"));
+    if (mode == "prescribed")
+    {
+        driverModes::prescribed(dict, *law, output);
+    }
+    else if (mode == "springSlider")
+    {
+        driverModes::springSlider(dict, *law, output);
+    }
+    else if (mode == "stability")
+    {
+        driverModes::stability(dict, *law, output);
     }
     else
     {
-        autoPtr<frictionLaw> law = frictionLaw::New(dict.subDict("law"));
-        if (mode == "prescribed")
-        {
-            driverModes::prescribed(dict, *law, output);
-        }
-        else if (mode == "springSlider")
-        {
-            driverModes::springSlider(dict, *law, output);
-        }
-        else if (mode == "stability")
-        {
-            driverModes::stability(dict, *law, output);
-        }
-        else
-        {
-            FatalIOErrorInFunction(dict)
-                << "keyword 'mode' must be prescribed, springSlider,"
-                << " stability, identification, frictionMap or fit, got '"
-                << mode << "'" << exit(FatalIOError);
-        }
+        FatalIOErrorInFunction(dict)
+            << "keyword 'mode' must be prescribed, springSlider,"
+            << " stability, identification, frictionMap or fit, got '"
+            << mode << "'" << exit(FatalIOError);
     }
+}
+
+}
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "The friction laboratory: drive a point-wise friction law (slip-rate"
+        " history, spring-slider), its stability, identification, friction"
+        " map and parameter fit; writes a table and a PNG plot"
+    );
+    argList::noParallel();
+    argList::noFunctionObjects();
+    argList::noCheckProcessorDirectories();
+    argList::addOption
+    (
+        "dict",
+        "file",
+        "driver dictionary (default: frictionLawDriverDict)"
+    );
+
+    argList args(argc, argv);
+
+    const dictionary dict
+    (
+        readDriverDict
+        (
+            args.getOrDefault<fileName>("dict", "frictionLawDriverDict")
+        )
+    );
+    const word mode(dict.get<word>("mode"));
+    const fileName output
+    (
+        dict.getOrDefault<fileName>("output", "frictionLawDriver.dat")
+    );
+    reportFiles::checkWritable(dict, "output", output);
+    checkKeywords(dict);
+
+    runMode(dict, mode, output);
 
     frictionLaw::reportIterationLimitHits();
 
     Info<< "End" << endl;
     return 0;
 }
+
+
+// ************************************************************************* //
