@@ -384,6 +384,166 @@ void Foam::solidDiscretisation::forcePatchKinematics
 }
 
 
+// * * * * * * * * * * * * * * * * * Set-up  * * * * * * * * * * * * * * * * //
+
+void Foam::solidDiscretisation::setPatchGeometry()
+{
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& p = mesh_.boundary()[patchi];
+        patchDelta_[patchi] =
+            bcs_.kind(patchi) == solidBoundaries::COUPLED
+          ? p.delta()
+          : tmp<vectorField>(p.Cf() - p.Cn());
+        patchNormal_[patchi] = p.nf();
+    }
+}
+
+
+void Foam::solidDiscretisation::attachForcePatches()
+{
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (bcs_.kind(patchi) == solidBoundaries::FORCE)
+        {
+            bcs_.forcePatch(patchi).attach(*this);
+        }
+    }
+}
+
+
+void Foam::solidDiscretisation::setHistoryOutput()
+{
+    // Constructing from a tmp drops the write option: set it here so the
+    // plastic history reaches every written time (and a restart)
+    const IOobject::writeOption historyWrite =
+        laws_.plastic() ? IOobject::AUTO_WRITE : IOobject::NO_WRITE;
+    CpInv_.writeOpt() = historyWrite;
+    epsilonPf_.writeOpt() = historyWrite;
+    if (laws_.plastic())
+    {
+        // [S19b] a restart without the history would start it virgin
+        solidRestartState::require
+        (
+            mesh_, "CpInv", "the plastic history (inverse plastic right"
+            " Cauchy-Green tensor at faces)"
+        );
+        solidRestartState::require
+        (
+            mesh_, "epsilonPf", "the plastic history (equivalent plastic"
+            " strain at faces)"
+        );
+    }
+}
+
+
+Foam::scalar Foam::solidDiscretisation::readInertia
+(
+    const dictionary& mechanicalProperties
+)
+{
+    const dictionary& schemes = mesh_.schemesDict();
+    // the solver discretises the momentum balance itself: of fvSchemes it
+    // reads d2dt2Schemes' default alone, and a per-field entry there
+    // ('d2dt2(D) Euler;') or a misspelled 'default' would be ignored
+    strictDictionary::check
+    (
+        schemes.subDict("d2dt2Schemes"), {"default"},
+        "largeStrainSolidFoam reads only 'default' there: steadyState"
+        " (quasi-static) or Euler (inertia)"
+    );
+    const word d2dt2(schemes.subDict("d2dt2Schemes").get<word>("default"));
+    if (d2dt2 == "Euler")
+    {
+        inertia_ = true;
+    }
+    else if (d2dt2 != "steadyState")
+    {
+        FatalIOErrorInFunction(schemes)
+            << "Keyword 'default' in d2dt2Schemes of " << schemes.name()
+            << " is '" << d2dt2 << "'; expected steadyState (quasi-static)"
+            << " or Euler (inertia)" << nl << exit(FatalIOError);
+    }
+    for (label bodyi = 0; inertia_ && bodyi < laws_.size(); ++bodyi)
+    {
+        if (laws_[bodyi].rho() <= 0)
+        {
+            FatalIOErrorInFunction(mechanicalProperties)
+                << "Keyword 'rho' in " << mechanicalProperties.name()
+                << " (body " << laws_.name(bodyi) << ") must be > 0 when"
+                << " d2dt2Schemes is Euler" << nl << exit(FatalIOError);
+        }
+    }
+
+    // [S13b] mass scaling: quasi-static forming runs with a heavier body so
+    // that the rate-dependent friction's instabilities resolve dynamically
+    const scalar massScaling =
+        mechanicalProperties.lookupOrDefault<scalar>("massScaling", 1);
+    if (!(massScaling >= 1 && massScaling <= 1e12))
+    {
+        FatalIOErrorInFunction(mechanicalProperties)
+            << "Keyword 'massScaling' in " << mechanicalProperties.name()
+            << " is " << massScaling << "; expected a value in [1, 1e12]"
+            << nl << exit(FatalIOError);
+    }
+    if (inertia_)
+    {
+        forAll(inertiaDensity_, celli)
+        {
+            inertiaDensity_[celli] = massScaling*laws_.cellLaw(celli).rho();
+        }
+    }
+    else if (massScaling != 1)
+    {
+        IOWarningInFunction(mechanicalProperties)
+            << "Keyword 'massScaling' in " << mechanicalProperties.name()
+            << " has no effect: the run is quasi-static (d2dt2Schemes "
+            << "steadyState)" << endl;
+    }
+    return massScaling;
+}
+
+
+void Foam::solidDiscretisation::initialisePatchStates
+(
+    const volVectorField& D
+)
+{
+    forAll(mesh_.boundary(), patchi)
+    {
+        trialPatch_[patchi].setSize(mesh_.boundary()[patchi].size());
+        if (bcs_.kind(patchi) == solidBoundaries::FORCE)
+        {
+            // the written patch value is the face displacement (restart)
+            forcePatchD0_[patchi] = D.boundaryField()[patchi];
+        }
+    }
+}
+
+
+void Foam::solidDiscretisation::reportSetup(const scalar massScaling) const
+{
+    Info<< "Total Lagrangian solid: " << mesh_.nGeometricD() << "-D"
+        << (bcs_.axisymmetric() ? " axisymmetric" : "") << ", "
+        << returnReduce(mesh_.nCells(), sumOp<label>()) << " cells, ";
+    if (laws_.size() == 1)
+    {
+        Info<< "law " << laws_[0].type() << ", E " << laws_[0].E()
+            << " Pa, nu " << laws_[0].nu();
+    }
+    else
+    {
+        Info<< laws_.size() << " bodies";
+    }
+    Info<< (inertia_ ? ", with inertia" : ", quasi-static");
+    if (inertia_ && massScaling > 1)
+    {
+        Info<< " (mass scaling " << massScaling << ")";
+    }
+    Info<< nl << endl;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::solidDiscretisation::forceKinematics::forceKinematics
@@ -460,139 +620,20 @@ Foam::solidDiscretisation::solidDiscretisation
     forceScale_(0),
     forceFloor_(0)
 {
-    forAll(mesh_.boundary(), patchi)
-    {
-        const fvPatch& p = mesh_.boundary()[patchi];
-        patchDelta_[patchi] =
-            bcs.kind(patchi) == solidBoundaries::COUPLED
-          ? p.delta()
-          : tmp<vectorField>(p.Cf() - p.Cn());
-        patchNormal_[patchi] = p.nf();
-    }
+    setPatchGeometry();
     // The force boundaries get the solid they load before anything asks
     // them for a force (the coupling stencils below already do)
-    forAll(mesh_.boundary(), patchi)
-    {
-        if (bcs_.kind(patchi) == solidBoundaries::FORCE)
-        {
-            bcs_.forcePatch(patchi).attach(*this);
-        }
-    }
+    attachForcePatches();
     gatherCouplingStencils();
-
-    // Constructing from a tmp drops the write option: set it here so the
-    // plastic history reaches every written time (and a restart)
-    const IOobject::writeOption historyWrite =
-        laws.plastic() ? IOobject::AUTO_WRITE : IOobject::NO_WRITE;
-    CpInv_.writeOpt() = historyWrite;
-    epsilonPf_.writeOpt() = historyWrite;
-    if (laws.plastic())
-    {
-        // [S19b] a restart without the history would start it virgin
-        solidRestartState::require
-        (
-            mesh_, "CpInv", "the plastic history (inverse plastic right"
-            " Cauchy-Green tensor at faces)"
-        );
-        solidRestartState::require
-        (
-            mesh_, "epsilonPf", "the plastic history (equivalent plastic"
-            " strain at faces)"
-        );
-    }
-
-    const dictionary& schemes = mesh_.schemesDict();
-    // the solver discretises the momentum balance itself: of fvSchemes it
-    // reads d2dt2Schemes' default alone, and a per-field entry there
-    // ('d2dt2(D) Euler;') or a misspelled 'default' would be ignored
-    strictDictionary::check
-    (
-        schemes.subDict("d2dt2Schemes"), {"default"},
-        "largeStrainSolidFoam reads only 'default' there: steadyState"
-        " (quasi-static) or Euler (inertia)"
-    );
-    const word d2dt2(schemes.subDict("d2dt2Schemes").get<word>("default"));
-    if (d2dt2 == "Euler")
-    {
-        inertia_ = true;
-    }
-    else if (d2dt2 != "steadyState")
-    {
-        FatalIOErrorInFunction(schemes)
-            << "Keyword 'default' in d2dt2Schemes of " << schemes.name()
-            << " is '" << d2dt2 << "'; expected steadyState (quasi-static)"
-            << " or Euler (inertia)" << nl << exit(FatalIOError);
-    }
-    for (label bodyi = 0; inertia_ && bodyi < laws.size(); ++bodyi)
-    {
-        if (laws[bodyi].rho() <= 0)
-        {
-            FatalIOErrorInFunction(mechanicalProperties)
-                << "Keyword 'rho' in " << mechanicalProperties.name()
-                << " (body " << laws.name(bodyi) << ") must be > 0 when"
-                << " d2dt2Schemes is Euler" << nl << exit(FatalIOError);
-        }
-    }
-
-    // [S13b] mass scaling: quasi-static forming runs with a heavier body so
-    // that the rate-dependent friction's instabilities resolve dynamically
-    const scalar massScaling =
-        mechanicalProperties.lookupOrDefault<scalar>("massScaling", 1);
-    if (!(massScaling >= 1 && massScaling <= 1e12))
-    {
-        FatalIOErrorInFunction(mechanicalProperties)
-            << "Keyword 'massScaling' in " << mechanicalProperties.name()
-            << " is " << massScaling << "; expected a value in [1, 1e12]"
-            << nl << exit(FatalIOError);
-    }
-    if (inertia_)
-    {
-        forAll(inertiaDensity_, celli)
-        {
-            inertiaDensity_[celli] = massScaling*laws.cellLaw(celli).rho();
-        }
-    }
-    else if (massScaling != 1)
-    {
-        IOWarningInFunction(mechanicalProperties)
-            << "Keyword 'massScaling' in " << mechanicalProperties.name()
-            << " has no effect: the run is quasi-static (d2dt2Schemes "
-            << "steadyState)" << endl;
-    }
-
-    forAll(mesh_.boundary(), patchi)
-    {
-        trialPatch_[patchi].setSize(mesh_.boundary()[patchi].size());
-        if (bcs_.kind(patchi) == solidBoundaries::FORCE)
-        {
-            // the written patch value is the face displacement (restart)
-            forcePatchD0_[patchi] = D.boundaryField()[patchi];
-        }
-    }
+    setHistoryOutput();
+    const scalar massScaling = readInertia(mechanicalProperties);
+    initialisePatchStates(D);
 
     forceFloor_ = computeForceFloor();
 
     setIterate(D0_);
 
-    Info<< "Total Lagrangian solid: " << mesh_.nGeometricD() << "-D"
-        << (bcs.axisymmetric() ? " axisymmetric" : "") << ", "
-        << returnReduce(mesh_.nCells(), sumOp<label>()) << " cells, ";
-    if (laws.size() == 1)
-    {
-        Info<< "law " << laws[0].type() << ", E " << laws[0].E() << " Pa, nu "
-            << laws[0].nu();
-    }
-    else
-    {
-        Info<< laws.size() << " bodies";
-    }
-    Info
-        << (inertia_ ? ", with inertia" : ", quasi-static");
-    if (inertia_ && massScaling > 1)
-    {
-        Info<< " (mass scaling " << massScaling << ")";
-    }
-    Info<< nl << endl;
+    reportSetup(massScaling);
 }
 
 
