@@ -155,32 +155,6 @@ Foam::bodyLaws::bodyLaws
 }
 
 
-// * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
-
-const Foam::dictionary& Foam::bodyLaws::lawDict
-(
-    const dictionary& mechanicalProperties,
-    const polyMesh& mesh,
-    const label celli
-)
-{
-    if (!mechanicalProperties.found("bodies"))
-    {
-        return mechanicalProperties.subDict("mechanicalLaw");
-    }
-    const dictionary& bodies = mechanicalProperties.subDict("bodies");
-    const label zonei = mesh.cellZones().whichZone(celli);
-    if (zonei < 0 || !bodies.found(mesh.cellZones()[zonei].name()))
-    {
-        FatalIOErrorInFunction(bodies)
-            << "Cell " << celli << " lies in no body of 'bodies' in "
-            << mechanicalProperties.name() << nl << exit(FatalIOError);
-    }
-    return bodies.subDict(mesh.cellZones()[zonei].name())
-        .subDict("mechanicalLaw");
-}
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::scalar Foam::bodyLaws::planeStrainModulus
