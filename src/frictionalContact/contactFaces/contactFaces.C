@@ -86,7 +86,6 @@ void Foam::contactFaces::createLaw() const
 void Foam::contactFaces::findFlowLaw()
 {
     flowLaw_ = nullptr;
-    shearYieldTimeIndex_ = -1;
     if (!law().needsShearYield())
     {
         return;
@@ -125,28 +124,36 @@ void Foam::contactFaces::findFlowLaw()
 }
 
 
+void Foam::contactFaces::refreshShearYield() const
+{
+    // [F35] k_n from the committed plastic strain of the face's cell:
+    // constant over a step; taken when the solid is attached and at each
+    // commit (the solid commits its plastic history before its force
+    // boundaries)
+    if (!flowLaw_)
+    {
+        shearYield_.clear();
+        return;
+    }
+    const fvPatch& p = contactPatch();
+    const scalarField epsP(body().cellPlasticStrain(p.faceCells()));
+    shearYield_.setSize(p.size());
+    forAll(epsP, facei)
+    {
+        shearYield_[facei] = flowLaw_->yieldStress(epsP[facei])/std::sqrt(3.0);
+    }
+}
+
+
 Foam::scalar Foam::contactFaces::shearYield(const label i) const
 {
     if (!flowLaw_)
     {
         return -1;
     }
-
-    // [F35] k_n from the committed plastic strain of the face's cell:
-    // constant over the step, refreshed once per time step
-    const fvPatch& p = contactPatch();
-    const fvMesh& mesh = p.boundaryMesh().mesh();
-    const label timeIndex = mesh.time().timeIndex();
-    if (timeIndex != shearYieldTimeIndex_ || shearYield_.size() != p.size())
+    if (shearYield_.size() != contactPatch().size())
     {
-        const scalarField epsP(body_->cellPlasticStrain(p.faceCells()));
-        shearYield_.setSize(p.size());
-        forAll(epsP, facei)
-        {
-            shearYield_[facei] =
-                flowLaw_->yieldStress(epsP[facei])/std::sqrt(3.0);
-        }
-        shearYieldTimeIndex_ = timeIndex;
+        refreshShearYield();
     }
     return shearYield_[i];
 }
@@ -451,6 +458,7 @@ void Foam::contactFaces::attachBody(const solidBody& body)
     checkRestartState();
     createLaw();
     findFlowLaw();
+    refreshShearYield();
 }
 
 
@@ -599,7 +607,6 @@ Foam::contactFaces::contactFaces()
     nAugmentations_(0),
     body_(nullptr),
     flowLaw_(nullptr),
-    shearYieldTimeIndex_(-1),
     linearised_(false)
 {
     onsetFace_ = -1;

@@ -206,6 +206,8 @@ void Foam::contactFaces::commitOpenFace(const label i)
 
 void Foam::contactFaces::endCommit()
 {
+    // the next step's k from the plastic strain just committed
+    refreshShearYield();
     totalDissipation_ = gSum(dissipation_);
     reduce(normalForce_, sumOp<vector>());
     reduce(frictionForce_, sumOp<vector>());

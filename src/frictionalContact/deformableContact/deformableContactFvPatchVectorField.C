@@ -370,7 +370,7 @@ Foam::deformableContactFvPatchVectorField::deformableContactFvPatchVectorField
     slave_(false),
     searchDistance_(GREAT),
     checked_(false),
-    committedTimeIndex_(-1)
+    committedTime_(-GREAT)
 {
     setSegments();
 }
@@ -389,7 +389,7 @@ Foam::deformableContactFvPatchVectorField::deformableContactFvPatchVectorField
     slave_(dict.found("frictionLaw")),
     searchDistance_(-1),
     checked_(false),
-    committedTimeIndex_(-1)
+    committedTime_(-GREAT)
 {
     const fvMesh& mesh = p.boundaryMesh().mesh();
     if (!isA<wallFvPatch>(p))
@@ -484,7 +484,7 @@ Foam::deformableContactFvPatchVectorField::deformableContactFvPatchVectorField
     slave_(ptf.slave_),
     searchDistance_(ptf.searchDistance_),
     checked_(false),
-    committedTimeIndex_(-1)
+    committedTime_(-GREAT)
 {
     setSegments();
     if (slave_)
@@ -506,7 +506,7 @@ Foam::deformableContactFvPatchVectorField::deformableContactFvPatchVectorField
     Xa_(ptf.Xa_),
     Xb_(ptf.Xb_),
     Xv_(ptf.Xv_),
-    committedTimeIndex_(-1)
+    committedTime_(-GREAT)
 {
     copyPair(ptf);
 }
@@ -524,7 +524,7 @@ Foam::deformableContactFvPatchVectorField::deformableContactFvPatchVectorField
     Xa_(ptf.Xa_),
     Xb_(ptf.Xb_),
     Xv_(ptf.Xv_),
-    committedTimeIndex_(-1)
+    committedTime_(-GREAT)
 {
     copyPair(ptf);
 }

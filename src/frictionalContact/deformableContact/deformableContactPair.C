@@ -171,6 +171,7 @@ bool Foam::deformableContactFvPatchVectorField::takeCached
     const bool forSlave,
     const side& sl,
     const side& ms,
+    const scalar time,
     const scalar deltaT,
     List<faceForceTangent>& own,
     DynamicList<faceCoupling>& c
@@ -180,7 +181,7 @@ bool Foam::deformableContactFvPatchVectorField::takeCached
     bool hit =
         k.valid
      && k.forSlave == forSlave
-     && k.timeIndex == db().time().timeIndex()
+     && k.time == time
      && k.deltaT == deltaT
      && k.slaveD == sl.D && k.slaveF == sl.F
      && k.masterD == ms.D && k.masterF == ms.F;
@@ -385,7 +386,7 @@ void Foam::deformableContactFvPatchVectorField::tangentAndCouplings
     side ms;
     s.kinematics(sl);
     s.partnerKinematics(ms, false);
-    if (s.takeCached(slave_, sl, ms, k.deltaT, df, c))
+    if (s.takeCached(slave_, sl, ms, k.time, k.deltaT, df, c))
     {
         return;
     }
@@ -423,7 +424,7 @@ void Foam::deformableContactFvPatchVectorField::tangentAndCouplings
     tangentCache& cache = s.cache_;
     cache.valid = true;
     cache.forSlave = !slave_;
-    cache.timeIndex = db().time().timeIndex();
+    cache.time = k.time;
     cache.deltaT = k.deltaT;
     cache.slaveD = sl.D;
     cache.slaveF = sl.F;
@@ -567,7 +568,6 @@ void Foam::deformableContactFvPatchVectorField::commit
 )
 {
     checkPair();
-    const label timeIndex = db().time().timeIndex();
     side sl;
     side ms;
     List<slaveFace> faces;
@@ -578,7 +578,7 @@ void Foam::deformableContactFvPatchVectorField::commit
         vectorField fs;
         pairForces(faces, ms.X.size(), fs, committedMasterForce_);
         reduceMasterForces(committedMasterForce_, partner().patch().size());
-        committedTimeIndex_ = timeIndex;
+        committedTime_ = k.time;
 
         commitSlaveFaces(faces, sl.S0, sl.X + sl.D);
         return;
@@ -588,7 +588,7 @@ void Foam::deformableContactFvPatchVectorField::commit
     // state moved on (if it committed first)
     const deformableContactFvPatchVectorField& s = partner();
     vectorField fm;
-    if (s.committedTimeIndex_ == timeIndex)
+    if (s.committedTime_ == k.time)
     {
         fm = s.committedMasterForce_;
     }

@@ -955,15 +955,7 @@ void Foam::solidDiscretisation::commit(const scalar dt)
     forAll(mesh_.boundary(), patchi)
     {
         const solidBoundaries::patchKind kind = bcs_.kind(patchi);
-
-        if (kind == solidBoundaries::FORCE)
-        {
-            const forceKinematics fk(*this, patchi, dt);
-            const solidPatchKinematics& k = fk.k;
-            bcs_.forcePatch(patchi).commit(k);
-            forcePatchD0_[patchi] = k.D;
-        }
-        else if (kind != solidBoundaries::EMPTY)
+        if (kind != solidBoundaries::FORCE && kind != solidBoundaries::EMPTY)
         {
             symmTensorField& CpB = CpInv_.boundaryFieldRef()[patchi];
             scalarField& epsB = epsilonPf_.boundaryFieldRef()[patchi];
@@ -973,6 +965,19 @@ void Foam::solidDiscretisation::commit(const scalar dt)
                 CpB[i] = trial[i].CpInv;
                 epsB[i] = trial[i].epsilonP;
             }
+        }
+    }
+
+    // The force boundaries after the whole plastic history: a contact takes
+    // the next step's flow stress from it [F35]
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (bcs_.kind(patchi) == solidBoundaries::FORCE)
+        {
+            const forceKinematics fk(*this, patchi, dt);
+            const solidPatchKinematics& k = fk.k;
+            bcs_.forcePatch(patchi).commit(k);
+            forcePatchD0_[patchi] = k.D;
         }
     }
 
