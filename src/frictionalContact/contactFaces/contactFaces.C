@@ -127,9 +127,9 @@ void Foam::contactFaces::findFlowLaw()
 void Foam::contactFaces::refreshShearYield() const
 {
     // [F35] k_n from the committed plastic strain of the face's cell:
-    // constant over a step; taken when the solid is attached and at each
-    // commit (the solid commits its plastic history before its force
-    // boundaries)
+    // constant over a step; taken at the first use (after the solid is
+    // attached, and in a copy of the condition) and at each commit (the
+    // solid commits its plastic history before its force boundaries)
     if (!flowLaw_)
     {
         shearYield_.clear();
@@ -216,14 +216,11 @@ Foam::wordList Foam::contactFaces::missingState
             missing.append(e.name);
         }
     }
-    wordList always({"value", "dissipatedEnergy"});
-    if (augmented_)
+    for (const word& key : faceStateKeywords())
     {
-        always.append("normalMultiplier");
-    }
-    for (const word& key : always)
-    {
-        if (!dict.found(key))
+        // the multipliers only with the augmented Lagrangian
+        const bool written = augmented_ || key != "normalMultiplier";
+        if (written && !dict.found(key))
         {
             missing.append(key);
         }
@@ -439,7 +436,7 @@ void Foam::contactFaces::readContactFaces(const dictionary& dict)
     {
         settings_.remove(key);
     }
-    for (const word& key : {"value", "dissipatedEnergy", "normalMultiplier"})
+    for (const word& key : faceStateKeywords())
     {
         settings_.remove(key);
     }
@@ -458,7 +455,7 @@ void Foam::contactFaces::attachBody(const solidBody& body)
     checkRestartState();
     createLaw();
     findFlowLaw();
-    refreshShearYield();
+    shearYield_.clear();
 }
 
 
@@ -480,12 +477,21 @@ Foam::wordList Foam::contactFaces::contactFacesKeywords() const
     wordList w
     ({
         "frictionLaw", "penaltyScale", "tangentialPenaltyScale",
-        "contactSmoothing", "contactSmoothingCells", "augmentedLagrangian",
-        "dissipatedEnergy",
-        "normalMultiplier"
+        "contactSmoothing", "contactSmoothingCells", "augmentedLagrangian"
     });
+    w.append(faceStateKeywords());
     w.append(layout_.keywords());
     return w;
+}
+
+
+const Foam::wordList& Foam::contactFaces::faceStateKeywords()
+{
+    static const wordList keys
+    ({
+        "value", "dissipatedEnergy", "normalMultiplier"
+    });
+    return keys;
 }
 
 
