@@ -501,7 +501,7 @@ Foam::deformableContactFvPatchVectorField::deformableContactFvPatchVectorField
 )
 :
     calculatedFvPatchVectorField(ptf),
-    solidForceBoundary(),
+    contactForceBoundary(),
     contactFaces(),
     Xa_(ptf.Xa_),
     Xb_(ptf.Xb_),
@@ -519,7 +519,7 @@ Foam::deformableContactFvPatchVectorField::deformableContactFvPatchVectorField
 )
 :
     calculatedFvPatchVectorField(ptf, iF),
-    solidForceBoundary(),
+    contactForceBoundary(),
     contactFaces(),
     Xa_(ptf.Xa_),
     Xb_(ptf.Xb_),

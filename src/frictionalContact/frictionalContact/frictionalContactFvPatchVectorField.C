@@ -139,7 +139,7 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
 )
 :
     calculatedFvPatchVectorField(ptf),
-    solidForceBoundary(),
+    contactForceBoundary(),
     contactFaces()
 {
     copyFrom(ptf);
@@ -153,7 +153,7 @@ Foam::frictionalContactFvPatchVectorField::frictionalContactFvPatchVectorField
 )
 :
     calculatedFvPatchVectorField(ptf, iF),
-    solidForceBoundary(),
+    contactForceBoundary(),
     contactFaces()
 {
     copyFrom(ptf);

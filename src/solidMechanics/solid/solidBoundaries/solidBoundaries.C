@@ -69,6 +69,7 @@ Foam::solidBoundaries::patchKind Foam::solidBoundaries::classify
     if (isA<solidForceBoundary>(pf))
     {
         forcePatches_[patchi] = dynamic_cast<solidForceBoundary*>(&pf);
+        contactPatches_[patchi] = dynamic_cast<contactForceBoundary*>(&pf);
         return FORCE;
     }
     if (pf.fixesValue())
@@ -231,6 +232,7 @@ Foam::solidBoundaries::solidBoundaries(volVectorField& D)
     mesh_(D.mesh()),
     kinds_(mesh_.boundary().size()),
     forcePatches_(mesh_.boundary().size(), nullptr),
+    contactPatches_(mesh_.boundary().size(), nullptr),
     axisymmetric_(false),
     axis_(Zero),
     hoopDirection_(Zero),
@@ -240,6 +242,15 @@ Foam::solidBoundaries::solidBoundaries(volVectorField& D)
     {
         kinds_[patchi] = classify(patchi, D);
     }
+    DynamicList<label> contacts;
+    forAll(contactPatches_, patchi)
+    {
+        if (contactPatches_[patchi])
+        {
+            contacts.append(patchi);
+        }
+    }
+    contactPatchIDs_.transfer(contacts);
     checkEmptyPatches(D);
     setWedgeGeometry(D);
 }

@@ -692,15 +692,11 @@ Foam::label Foam::solidDiscretisation::correctPrediction(vectorField& u)
     vectorField du(u.size(), Zero);
     labelField nFaces(u.size(), 0);
     label nCorrected = 0;
-    forAll(mesh_.boundary(), patchi)
+    for (const label patchi : bcs_.contactPatchIDs())
     {
-        if (bcs_.kind(patchi) != solidBoundaries::FORCE)
-        {
-            continue;
-        }
         const forceKinematics fk(*this, patchi, mesh_.time().deltaTValue());
         vectorField dD(fk.k.D.size(), Zero);
-        if (bcs_.forcePatch(patchi).predictorCorrection(fk.k, dD) == 0)
+        if (bcs_.contactPatch(patchi).predictorCorrection(fk.k, dD) == 0)
         {
             continue;
         }
@@ -738,34 +734,25 @@ Foam::label Foam::solidDiscretisation::correctPrediction(vectorField& u)
 
 void Foam::solidDiscretisation::holdLinearisation(const bool on)
 {
-    forAll(mesh_.boundary(), patchi)
+    for (const label patchi : bcs_.contactPatchIDs())
     {
-        if (bcs_.kind(patchi) != solidBoundaries::FORCE)
-        {
-            continue;
-        }
         if (!on)
         {
-            bcs_.forcePatch(patchi).release();
+            bcs_.contactPatch(patchi).release();
             continue;
         }
         // the fields hold the last evaluated iterate
         const forceKinematics fk(*this, patchi, mesh_.time().deltaTValue());
-        const solidPatchKinematics& k = fk.k;
-        bcs_.forcePatch(patchi).linearise(k);
+        bcs_.contactPatch(patchi).linearise(fk.k);
     }
 }
 
 
 bool Foam::solidDiscretisation::augmentedForcePatches() const
 {
-    forAll(mesh_.boundary(), patchi)
+    for (const label patchi : bcs_.contactPatchIDs())
     {
-        if
-        (
-            bcs_.kind(patchi) == solidBoundaries::FORCE
-         && bcs_.forcePatch(patchi).augmentable()
-        )
+        if (bcs_.contactPatch(patchi).augmentable())
         {
             return true;
         }
@@ -777,15 +764,11 @@ bool Foam::solidDiscretisation::augmentedForcePatches() const
 bool Foam::solidDiscretisation::augmentForcePatches()
 {
     bool again = false;
-    forAll(mesh_.boundary(), patchi)
+    for (const label patchi : bcs_.contactPatchIDs())
     {
-        if (bcs_.kind(patchi) != solidBoundaries::FORCE)
-        {
-            continue;
-        }
         const forceKinematics fk(*this, patchi, mesh_.time().deltaTValue());
         // every patch (no short cut: the call is collective)
-        if (bcs_.forcePatch(patchi).augment(fk.k))
+        if (bcs_.contactPatch(patchi).augment(fk.k))
         {
             again = true;
         }
@@ -795,17 +778,14 @@ bool Foam::solidDiscretisation::augmentForcePatches()
 
 
 Foam::PtrList<Foam::solidDiscretisation::forceKinematics>
-Foam::solidDiscretisation::forcePatchKinematics(const vectorField& u)
+Foam::solidDiscretisation::contactPatchKinematics(const vectorField& u)
 {
     const scalar dt = mesh_.time().deltaTValue();
     setIterate(u);
     PtrList<forceKinematics> k(mesh_.boundary().size());
-    forAll(mesh_.boundary(), patchi)
+    for (const label patchi : bcs_.contactPatchIDs())
     {
-        if (bcs_.kind(patchi) == solidBoundaries::FORCE)
-        {
-            k.set(patchi, new forceKinematics(*this, patchi, dt));
-        }
+        k.set(patchi, new forceKinematics(*this, patchi, dt));
     }
     return k;
 }
@@ -817,24 +797,21 @@ Foam::scalar Foam::solidDiscretisation::firstContactFraction
     const vectorField& u1
 )
 {
-    const PtrList<forceKinematics> k0(forcePatchKinematics(u0));
-    const PtrList<forceKinematics> k1(forcePatchKinematics(u1));
+    const PtrList<forceKinematics> k0(contactPatchKinematics(u0));
+    const PtrList<forceKinematics> k1(contactPatchKinematics(u1));
     scalar fraction = 1;
-    forAll(k0, patchi)
+    for (const label patchi : bcs_.contactPatchIDs())
     {
-        if (k0.set(patchi))
-        {
-            // every patch (no short cut: the call is collective)
-            fraction =
-                min
+        // every patch (no short cut: the call is collective)
+        fraction =
+            min
+            (
+                fraction,
+                bcs_.contactPatch(patchi).firstContactFraction
                 (
-                    fraction,
-                    bcs_.forcePatch(patchi).firstContactFraction
-                    (
-                        k0[patchi].k, k1[patchi].k
-                    )
-                );
-        }
+                    k0[patchi].k, k1[patchi].k
+                )
+            );
     }
     return fraction;
 }
@@ -847,20 +824,17 @@ Foam::label Foam::solidDiscretisation::predictContacts
 )
 {
     // (u0 last: the iterate the solve goes on from)
-    const PtrList<forceKinematics> k1(forcePatchKinematics(u1));
-    const PtrList<forceKinematics> k0(forcePatchKinematics(u0));
+    const PtrList<forceKinematics> k1(contactPatchKinematics(u1));
+    const PtrList<forceKinematics> k0(contactPatchKinematics(u0));
     label nMarked = 0;
-    forAll(k0, patchi)
+    for (const label patchi : bcs_.contactPatchIDs())
     {
-        if (k0.set(patchi))
-        {
-            // every patch (the call is collective)
-            nMarked +=
-                bcs_.forcePatch(patchi).predictContacts
-                (
-                    k0[patchi].k, k1[patchi].k
-                );
-        }
+        // every patch (the call is collective)
+        nMarked +=
+            bcs_.contactPatch(patchi).predictContacts
+            (
+                k0[patchi].k, k1[patchi].k
+            );
     }
     return nMarked;
 }
@@ -868,12 +842,9 @@ Foam::label Foam::solidDiscretisation::predictContacts
 
 void Foam::solidDiscretisation::clearPredictedContacts()
 {
-    forAll(mesh_.boundary(), patchi)
+    for (const label patchi : bcs_.contactPatchIDs())
     {
-        if (bcs_.kind(patchi) == solidBoundaries::FORCE)
-        {
-            bcs_.forcePatch(patchi).clearPredictedContacts();
-        }
+        bcs_.contactPatch(patchi).clearPredictedContacts();
     }
 }
 
@@ -883,16 +854,11 @@ Foam::string Foam::solidDiscretisation::describeContactOnset() const
     // this processor's first onset, then the earliest over the processors
     scalar fraction = GREAT;
     string where;
-    forAll(mesh_.boundary(), patchi)
+    for (const label patchi : bcs_.contactPatchIDs())
     {
         scalar f;
         string w;
-        if
-        (
-            bcs_.kind(patchi) == solidBoundaries::FORCE
-         && bcs_.forcePatch(patchi).lastContactOnset(f, w)
-         && f < fraction
-        )
+        if (bcs_.contactPatch(patchi).lastContactOnset(f, w) && f < fraction)
         {
             fraction = f;
             where = w;
@@ -913,13 +879,9 @@ Foam::label Foam::solidDiscretisation::widenContactOnset
 )
 {
     label nPatches = 0;
-    forAll(mesh_.boundary(), patchi)
+    for (const label patchi : bcs_.contactPatchIDs())
     {
-        if
-        (
-            bcs_.kind(patchi) == solidBoundaries::FORCE
-         && bcs_.forcePatch(patchi).widenContactOnset(factor)
-        )
+        if (bcs_.contactPatch(patchi).widenContactOnset(factor))
         {
             ++nPatches;
         }
@@ -930,12 +892,9 @@ Foam::label Foam::solidDiscretisation::widenContactOnset
 
 void Foam::solidDiscretisation::resetAugmentation()
 {
-    forAll(mesh_.boundary(), patchi)
+    for (const label patchi : bcs_.contactPatchIDs())
     {
-        if (bcs_.kind(patchi) == solidBoundaries::FORCE)
-        {
-            bcs_.forcePatch(patchi).resetAugmentation();
-        }
+        bcs_.contactPatch(patchi).resetAugmentation();
     }
 }
 
