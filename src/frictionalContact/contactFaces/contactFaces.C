@@ -305,9 +305,11 @@ void Foam::contactFaces::readAugmentation(const dictionary& dict)
       ? a.get<scalar>("tolerance")
       : 1e-4*contactSurface::maxCellDepth(contactPatch());
     augmentMaxIterations_ = a.lookupOrDefault<label>("maxIterations", 10);
+    augmentAcceleration_ = a.lookupOrDefault<bool>("acceleration", true);
     strictDictionary::check
     (
-        a, {"tolerance", "maxIterations"}, "augmented Lagrangian contact"
+        a, {"tolerance", "maxIterations", "acceleration"},
+        "augmented Lagrangian contact"
     );
     if (!(augmentTolerance_ > 0) || augmentMaxIterations_ < 1)
     {
@@ -531,6 +533,8 @@ void Foam::contactFaces::copyContactFaces(const contactFaces& ptf)
     augmented_ = ptf.augmented_;
     augmentTolerance_ = ptf.augmentTolerance_;
     augmentMaxIterations_ = ptf.augmentMaxIterations_;
+    augmentAcceleration_ = ptf.augmentAcceleration_;
+    lastAugmentChange_ = ptf.lastAugmentChange_;
     committedMultiplier_ = ptf.committedMultiplier_;
     multiplier_ = ptf.multiplier_;
     nAugmentations_ = ptf.nAugmentations_;
@@ -610,7 +614,9 @@ Foam::contactFaces::contactFaces()
     augmented_(false),
     augmentTolerance_(0),
     augmentMaxIterations_(0),
+    augmentAcceleration_(false),
     nAugmentations_(0),
+    lastAugmentChange_(0),
     body_(nullptr),
     flowLaw_(nullptr),
     linearised_(false)
@@ -694,6 +700,7 @@ void Foam::contactFaces::resetMultipliers()
 {
     multiplier_ = committedMultiplier_;
     nAugmentations_ = 0;
+    lastAugmentChange_ = 0;
 }
 
 
@@ -745,9 +752,40 @@ bool Foam::contactFaces::augmentSlaveFaces(const List<slaveFace>& faces)
     {
         return false;
     }
-    multiplier_ = next;
+    const scalar omega = augmentExtrapolation(change);
+    forAll(next, i)
+    {
+        multiplier_[i] =
+            max(multiplier_[i] + omega*(next[i] - multiplier_[i]), 0);
+    }
+    lastAugmentChange_ = change;
     ++nAugmentations_;
     return true;
+}
+
+
+Foam::scalar Foam::contactFaces::augmentExtrapolation
+(
+    const scalar change
+) const
+{
+    // [C5e] Uzawa's updates contract the constraint's violation by a
+    // nearly constant factor rho (k/(k + KN), [C5b]): the multipliers'
+    // limit lies 1/(1 - rho) times the update away (Aitken). rho is the
+    // ratio of this update's change to the last one's; an update after
+    // an extrapolation that overshot or one that hardly contracted (rho
+    // outside (0, rhoMax)) is the plain one
+    const scalar rhoMax = 0.75;
+    if (!augmentAcceleration_ || lastAugmentChange_ <= 0)
+    {
+        return 1;
+    }
+    const scalar rho = change/lastAugmentChange_;
+    if (!(rho > 0) || rho > rhoMax)
+    {
+        return 1;
+    }
+    return 1/(1 - rho);
 }
 
 
