@@ -90,7 +90,10 @@ int main()
         << endl;
     {
         ctrl d(controls(""), 1);
-        checkTrue("default extrapolate", d.predictor() == ctrl::EXTRAPOLATE);
+        checkTrue
+        (
+            "default tangentFirst", d.predictor() == ctrl::TANGENT_FIRST
+        );
         ctrl y(controls("predictor yes;"), 1);
         checkTrue("yes = extrapolate", y.predictor() == ctrl::EXTRAPOLATE);
         ctrl n(controls("predictor no;"), 1);

@@ -34,7 +34,9 @@ Foam::timeStepController::readPredictor(const dictionary& dict)
     const entry* ePtr = dict.findEntry("predictor", keyType::LITERAL);
     if (!ePtr)
     {
-        return EXTRAPOLATE;
+        // [S18c] the tangent at the run's first step, then the
+        // extrapolation
+        return TANGENT_FIRST;
     }
 
     // One word: a name of the choice, or the former switch's yes/no
