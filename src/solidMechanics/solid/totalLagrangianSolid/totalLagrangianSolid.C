@@ -377,6 +377,8 @@ bool Foam::totalLagrangianSolid::tangentPrediction
         return false;
     }
     x = xStart + dx;
+    Info<< "    predictor: the tangent guess [S18c], largest change "
+        << gMaxNorm(dx) << " m" << endl;
     return true;
 }
 
