@@ -28,13 +28,45 @@ License
 namespace Foam
 {
 
-//- Time's precision for the time value of uniform/time
+//- Time's precision of time names, and the largest it takes
 struct timePrecision
 :
     public Time
 {
+    using Time::precision_;
     using Time::maxPrecision_;
 };
+
+
+//- Start Time at a time directory, its name kept: the precision of time
+//  names raised until the directory's value prints as its name.
+//  A run whose steps were cut back writes names with more digits than
+//  controlDict's timePrecision (Time raises it as it goes); Time's own
+//  search at the start walks down from the largest precision and gives up
+//  where two precisions print the same round-off digits (4.966394 prints
+//  as 4.9663940000000002 at 17 and 18), and would read the fields from
+//  4.96639, which does not exist. The step size stays controlDict's, as
+//  Time's start leaves it.
+static void startAt(Time& runTime, const instant& dir)
+{
+    const scalar deltaT = runTime.deltaTValue();
+    const scalar t = runTime.timeToUserTime(dir.value());
+    for
+    (
+        int p = timePrecision::precision_;
+        p <= timePrecision::maxPrecision_;
+        ++p
+    )
+    {
+        if (Time::timeName(t, p) == dir.name())
+        {
+            timePrecision::precision_ = p;
+            break;
+        }
+    }
+    runTime.setTime(dir, runTime.timeIndex());
+    runTime.setDeltaT(deltaT, false);
+}
 
 
 //- Print on the master, or on every processor with its number
@@ -181,7 +213,10 @@ void Foam::timeDirectoryWriter::selectStartTime(Time& runTime)
             << (Pstream::parRun() ? "some processor" : word("disk"))
             << ": a run stopped while writing it): starting from the newest"
             << " complete time, " << dirs[chosen].name() << nl << endl;
-        runTime.setTime(dirs[chosen], 0);
+    }
+    if (runTime.timeName() != dirs[chosen].name())
+    {
+        startAt(runTime, dirs[chosen]);
     }
 
     // The incomplete directories after the start: kept, moved aside
