@@ -137,7 +137,7 @@ def finiteDir(path):
     return True
 
 
-# The solver's own stop (largeStrainSolidFoam.C): a step that does not
+# The solver's own stop (solidTimeLoop.C): a step that does not
 # converge after the allowed cut-backs, the last converged time written
 cleanStop = re.compile(
     r"^FOAM FATAL ERROR\b[^\n]*\n(?:.*\n)*?The step to time \S+ did not "
