@@ -187,12 +187,19 @@ void Foam::contactFaces::readState
     {
         dissipation_ = scalarField("dissipatedEnergy", dict, n);
     }
-    // [C5b] the multipliers the next step starts from
+    // [C5b], [C5f] the multipliers the next step starts from, and the
+    // ones of the step before (to extrapolate from)
     if (dict.found("normalMultiplier"))
     {
         committedMultiplier_ = scalarField("normalMultiplier", dict, n);
     }
-    multiplier_ = committedMultiplier_;
+    previousMultiplier_ = committedMultiplier_;
+    if (dict.found("previousNormalMultiplier"))
+    {
+        previousMultiplier_ =
+            scalarField("previousNormalMultiplier", dict, n);
+    }
+    predictMultipliers(0);
 }
 
 
@@ -218,8 +225,12 @@ Foam::wordList Foam::contactFaces::missingState
     }
     for (const word& key : faceStateKeywords())
     {
-        // the multipliers only with the augmented Lagrangian
-        const bool written = augmented_ || key != "normalMultiplier";
+        // the multipliers only where the penalty is shifted by them, the
+        // step before's only with the predicted pressure
+        const bool written =
+            key == "previousNormalMultiplier" ? pressurePrediction_
+          : key == "normalMultiplier" ? shifted()
+          : true;
         if (written && !dict.found(key))
         {
             missing.append(key);
@@ -291,6 +302,25 @@ void Foam::contactFaces::readAugmentation(const dictionary& dict)
     const entry* e = dict.findEntry("augmentedLagrangian", keyType::LITERAL);
     augmented_ =
         e && (e->isDict() || dict.get<bool>("augmentedLagrangian"));
+    // [C5f] the default where the multipliers are not solved for; a time
+    // directory written before the keyword existed (a face state without
+    // it) continues with the plain penalty it was run with
+    const bool writtenBefore =
+        dict.found("dissipatedEnergy") && !dict.found("pressurePrediction");
+    pressurePrediction_ =
+        dict.lookupOrDefault<bool>
+        (
+            "pressurePrediction", !augmented_ && !writtenBefore
+        );
+    if (augmented_ && pressurePrediction_)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keywords 'augmentedLagrangian' and 'pressurePrediction yes'"
+            << " in dictionary " << dict.name() << " both given; expected"
+            << " one of them (the augmented Lagrangian solves for the"
+            << " pressures that the prediction guesses)" << nl
+            << exit(FatalIOError);
+    }
     if (!augmented_)
     {
         return;
@@ -348,14 +378,16 @@ void Foam::contactFaces::readContactFaces(const dictionary& dict)
     lawDict_ = dict.subDict("frictionLaw");
     strictDictionary::nameAfterSource(lawDict_);
     readAugmentation(dict);
-    // [C5], [C5c] stiff for the plain penalty and a given augmentation
-    // (its tolerance chosen for it), soft for 'augmentedLagrangian yes'
+    // [C5], [C5c], [C5f] stiff for the plain penalty and a given
+    // augmentation (its tolerance chosen for it), soft for
+    // 'augmentedLagrangian yes' and softer for the predicted pressure
     const bool defaultAugmentation =
         augmented_ && !dict.isDict("augmentedLagrangian");
     penaltyScale_ =
         dict.lookupOrDefault<scalar>
         (
-            "penaltyScale", defaultAugmentation ? 10 : 100
+            "penaltyScale",
+            defaultAugmentation ? 10 : pressurePrediction_ ? 3 : 100
         );
     tangentialPenaltyScale_ =
         dict.lookupOrDefault<scalar>("tangentialPenaltyScale", 0.1);
@@ -479,7 +511,8 @@ Foam::wordList Foam::contactFaces::contactFacesKeywords() const
     wordList w
     ({
         "frictionLaw", "penaltyScale", "tangentialPenaltyScale",
-        "contactSmoothing", "contactSmoothingCells", "augmentedLagrangian"
+        "contactSmoothing", "contactSmoothingCells", "augmentedLagrangian",
+        "pressurePrediction"
     });
     w.append(faceStateKeywords());
     w.append(layout_.keywords());
@@ -491,7 +524,8 @@ const Foam::wordList& Foam::contactFaces::faceStateKeywords()
 {
     static const wordList keys
     ({
-        "value", "dissipatedEnergy", "normalMultiplier"
+        "value", "dissipatedEnergy", "normalMultiplier",
+        "previousNormalMultiplier"
     });
     return keys;
 }
@@ -534,9 +568,12 @@ void Foam::contactFaces::copyContactFaces(const contactFaces& ptf)
     augmentTolerance_ = ptf.augmentTolerance_;
     augmentMaxIterations_ = ptf.augmentMaxIterations_;
     augmentAcceleration_ = ptf.augmentAcceleration_;
+    pressurePrediction_ = ptf.pressurePrediction_;
     lastAugmentChange_ = ptf.lastAugmentChange_;
     committedMultiplier_ = ptf.committedMultiplier_;
     multiplier_ = ptf.multiplier_;
+    previousMultiplier_ = ptf.previousMultiplier_;
+    startMultiplier_ = ptf.startMultiplier_;
     nAugmentations_ = ptf.nAugmentations_;
     linearised_ = false;
 }
@@ -552,6 +589,8 @@ void Foam::contactFaces::resizeFaces(const label n)
     dissipation_.setSize(n, 0);
     committedMultiplier_.setSize(n, 0);
     multiplier_.setSize(n, 0);
+    previousMultiplier_.setSize(n, 0);
+    startMultiplier_.setSize(n, 0);
 }
 
 
@@ -574,6 +613,8 @@ void Foam::contactFaces::copyFace
     dissipation_[to] = ptf.dissipation_[from];
     committedMultiplier_[to] = ptf.committedMultiplier_[from];
     multiplier_[to] = ptf.multiplier_[from];
+    previousMultiplier_[to] = ptf.previousMultiplier_[from];
+    startMultiplier_[to] = ptf.startMultiplier_[from];
 }
 
 
@@ -615,6 +656,7 @@ Foam::contactFaces::contactFaces()
     augmentTolerance_(0),
     augmentMaxIterations_(0),
     augmentAcceleration_(false),
+    pressurePrediction_(false),
     nAugmentations_(0),
     lastAugmentChange_(0),
     body_(nullptr),
@@ -698,9 +740,31 @@ bool Foam::contactFaces::setOnsetWidening(const scalar factor)
 
 void Foam::contactFaces::resetMultipliers()
 {
-    multiplier_ = committedMultiplier_;
+    multiplier_ = startMultiplier_;
     nAugmentations_ = 0;
     lastAugmentChange_ = 0;
+}
+
+
+void Foam::contactFaces::predictMultipliers(const scalar extrapolation)
+{
+    // [C5f] linear in time from the last two converged steps, as the
+    // displacements are [S18]; a pressure is never negative
+    startMultiplier_ = committedMultiplier_;
+    if (pressurePrediction_ && extrapolation > 0)
+    {
+        forAll(startMultiplier_, i)
+        {
+            startMultiplier_[i] = max
+            (
+                committedMultiplier_[i]
+              + extrapolation
+               *(committedMultiplier_[i] - previousMultiplier_[i]),
+                scalar(0)
+            );
+        }
+    }
+    resetMultipliers();
 }
 
 

@@ -169,7 +169,8 @@ void Foam::contactFaces::commitFace
     nominalContactPressure_[i] = res.tN*area/magS0;
     frictionTraction_[i] = -res.tT;
     penetration_[i] = max(-gap, scalar(0));
-    committedMultiplier_[i] = augmented_ ? res.tN : 0;
+    previousMultiplier_[i] = committedMultiplier_[i];
+    committedMultiplier_[i] = shifted() ? res.tN : 0;
 
     normalForce_ += area*res.tN*n;
     frictionForce_ -= area*res.tT;
@@ -200,6 +201,7 @@ void Foam::contactFaces::commitOpenFace(const label i)
     nominalContactPressure_[i] = 0;
     frictionTraction_[i] = Zero;
     penetration_[i] = 0;
+    previousMultiplier_[i] = committedMultiplier_[i];
     committedMultiplier_[i] = 0;
 }
 
@@ -246,8 +248,9 @@ void Foam::contactFaces::endCommit()
         maxPenetrationAt_ = where[iMax];
     }
 
-    // [C5b] the next step starts from this step's normal tractions
-    resetMultipliers();
+    // [C5b] the next step starts from this step's normal tractions (and
+    // [C5f] from their extrapolation, once the step's size is known)
+    predictMultipliers(0);
 
     updateFields();
     writeIntegrals();
@@ -333,7 +336,21 @@ void Foam::contactFaces::writeFaces(Ostream& os) const
         os.writeEntry("tolerance", augmentTolerance_);
         os.writeEntry("maxIterations", augmentMaxIterations_);
         os.endBlock();
+    }
+    else
+    {
+        os.writeEntry
+        (
+            "pressurePrediction", word(pressurePrediction_ ? "yes" : "no")
+        );
+    }
+    if (shifted())
+    {
         committedMultiplier_.writeEntry("normalMultiplier", os);
+    }
+    if (pressurePrediction_)
+    {
+        previousMultiplier_.writeEntry("previousNormalMultiplier", os);
     }
 }
 

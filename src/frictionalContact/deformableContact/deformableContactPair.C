@@ -552,11 +552,14 @@ bool Foam::deformableContactFvPatchVectorField::augment
 }
 
 
-void Foam::deformableContactFvPatchVectorField::resetAugmentation()
+void Foam::deformableContactFvPatchVectorField::resetAugmentation
+(
+    const scalar extrapolation
+)
 {
     if (slave_)
     {
-        resetMultipliers();
+        predictMultipliers(extrapolation);
         cache_ = tangentCache();
     }
 }

@@ -71,7 +71,11 @@ Foam::label Foam::deformableContactFvPatchVectorField::predictorCorrection
     {
         const slaveFace& o = converged[i];
         const slaveFace& p = predicted[i];
-        if (o.inReach && p.inReach && keepContact(o.gap, p.gap, p.n, dD[i]))
+        if
+        (
+            o.inReach && p.inReach
+         && keepContact(i, o.gap, p.gap, p.n, dD[i])
+        )
         {
             ++nCorrected;
         }

@@ -128,7 +128,7 @@ Foam::label Foam::frictionalContactFvPatchVectorField::predictorCorrection
             (
                 i, k.Cf0[i] + k.Dold[i], k.time - k.deltaT, k.Sf0[i], cpOld
             )
-         || smoothedPenetration(-cpOld.gap) <= 0
+         || !convergedInContact(i, cpOld.gap)
         )
         {
             continue;
@@ -138,7 +138,7 @@ Foam::label Foam::frictionalContactFvPatchVectorField::predictorCorrection
         if
         (
             surface_->nearestQuery(i, k.Cf0[i] + k.D[i], k.time, k.Sf0[i], cp)
-         && keepContact(cpOld.gap, cp.gap, cp.n, dD[i])
+         && keepContact(i, cpOld.gap, cp.gap, cp.n, dD[i])
         )
         {
             ++nCorrected;
@@ -163,9 +163,12 @@ bool Foam::frictionalContactFvPatchVectorField::augment
 }
 
 
-void Foam::frictionalContactFvPatchVectorField::resetAugmentation()
+void Foam::frictionalContactFvPatchVectorField::resetAugmentation
+(
+    const scalar extrapolation
+)
 {
-    resetMultipliers();
+    predictMultipliers(extrapolation);
 }
 
 

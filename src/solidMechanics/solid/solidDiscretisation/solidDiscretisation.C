@@ -890,11 +890,14 @@ Foam::label Foam::solidDiscretisation::widenContactOnset
 }
 
 
-void Foam::solidDiscretisation::resetAugmentation()
+void Foam::solidDiscretisation::resetAugmentation
+(
+    const scalar extrapolation
+)
 {
     for (const label patchi : bcs_.contactPatchIDs())
     {
-        bcs_.contactPatch(patchi).resetAugmentation();
+        bcs_.contactPatch(patchi).resetAugmentation(extrapolation);
     }
 }
 

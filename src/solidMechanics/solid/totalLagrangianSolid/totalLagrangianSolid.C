@@ -399,15 +399,21 @@ void Foam::totalLagrangianSolid::beginStep
     pack(discretisation_.D0(), xStart);
     x = xStart;
 
-    // [C5b] every attempt starts from the last converged multipliers
-    discretisation_.resetAugmentation();
-
     // [S18c] tangentFirst: the tangent where the extrapolation has no
     // step to extrapolate (it would give D_n)
     const timeStepController::predictorType kind =
         predictor != timeStepController::TANGENT_FIRST ? predictor
       : previousStep_ ? timeStepController::EXTRAPOLATE
       : timeStepController::TANGENT;
+
+    // [C5b] every attempt starts from the last converged multipliers,
+    // [C5f] extrapolated as the displacements are
+    discretisation_.resetAugmentation
+    (
+        kind == timeStepController::EXTRAPOLATE
+      ? mesh_.time().deltaTValue()/discretisation_.deltaT0()
+      : 0
+    );
 
     if (kind == timeStepController::EXTRAPOLATE)
     {
