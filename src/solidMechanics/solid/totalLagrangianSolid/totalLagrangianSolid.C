@@ -406,19 +406,19 @@ void Foam::totalLagrangianSolid::beginStep
       : previousStep_ ? timeStepController::EXTRAPOLATE
       : timeStepController::TANGENT;
 
-    // [C5b] every attempt starts from the last converged multipliers,
-    // [C5f] extrapolated as the displacements are
-    discretisation_.resetAugmentation
-    (
+    // [S18] the step's size over the last one's, 0 where nothing is
+    // extrapolated
+    const scalar ratio =
         kind == timeStepController::EXTRAPOLATE
       ? mesh_.time().deltaTValue()/discretisation_.deltaT0()
-      : 0
-    );
+      : 0;
+
+    // [C5b] every attempt starts from the last converged multipliers,
+    // [C5f] extrapolated as the displacements are
+    discretisation_.resetAugmentation(ratio);
 
     if (kind == timeStepController::EXTRAPOLATE)
     {
-        const scalar ratio =
-            mesh_.time().deltaTValue()/discretisation_.deltaT0();
         Eigen::VectorXd x00;
         pack(discretisation_.D00(), x00);
         x += ratio*(xStart - x00);
