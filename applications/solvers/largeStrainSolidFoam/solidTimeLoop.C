@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "solidTimeLoop.H"
+#include "OStringStream.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -141,6 +142,32 @@ void Foam::solidTimeLoop::augmentBetweenSolves
 }
 
 
+void Foam::solidTimeLoop::rejectFacesPressedThrough
+(
+    newtonSolver::result& res
+)
+{
+    // [C2e] a face pressed through the other surface beyond the search
+    // distance carries no force and would sink further in the steps to
+    // come: the solve is no solution (a smaller step, whose prediction
+    // errs less, keeps the faces in reach)
+    if (!res.converged)
+    {
+        return;
+    }
+    const label n = solid_.contactFacesPressedThrough(x_);
+    if (n)
+    {
+        res.converged = false;
+        res.accepted = false;
+        OStringStream os;
+        os  << n << " contact faces pressed through the other surface,"
+            << " beyond the search distance";
+        res.reason = os.str();
+    }
+}
+
+
 // The exact-Jacobian Newton from the predictor, its continuation retry
 // [S14e], then the Jacobian-free retry from the last solution (a bounded
 // correction where the exact Jacobian is singular) [S18]. Returns the last
@@ -164,6 +191,7 @@ Foam::newtonSolver::result Foam::solidTimeLoop::solveLoadStep
             res = continueWithWiderOnset(res, nNewton);
         }
         augmentBetweenSolves(retry, res, nNewton);
+        rejectFacesPressedThrough(res);
 
         action =
             res.converged

@@ -574,6 +574,7 @@ void Foam::contactFaces::copyContactFaces(const contactFaces& ptf)
     multiplier_ = ptf.multiplier_;
     previousMultiplier_ = ptf.previousMultiplier_;
     startMultiplier_ = ptf.startMultiplier_;
+    committedInReach_ = ptf.committedInReach_;
     nAugmentations_ = ptf.nAugmentations_;
     linearised_ = false;
 }
@@ -591,6 +592,8 @@ void Foam::contactFaces::resizeFaces(const label n)
     multiplier_.setSize(n, 0);
     previousMultiplier_.setSize(n, 0);
     startMultiplier_.setSize(n, 0);
+    committedInReach_.setSize(n);
+    committedInReach_ = true;
 }
 
 
@@ -615,6 +618,7 @@ void Foam::contactFaces::copyFace
     multiplier_[to] = ptf.multiplier_[from];
     previousMultiplier_[to] = ptf.previousMultiplier_[from];
     startMultiplier_[to] = ptf.startMultiplier_[from];
+    committedInReach_[to] = ptf.committedInReach_[from];
 }
 
 

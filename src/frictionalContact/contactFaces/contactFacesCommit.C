@@ -171,6 +171,7 @@ void Foam::contactFaces::commitFace
     penetration_[i] = max(-gap, scalar(0));
     previousMultiplier_[i] = committedMultiplier_[i];
     committedMultiplier_[i] = shifted() ? res.tN : 0;
+    committedInReach_[i] = true;
 
     normalForce_ += area*res.tN*n;
     frictionForce_ -= area*res.tT;
@@ -203,6 +204,7 @@ void Foam::contactFaces::commitOpenFace(const label i)
     penetration_[i] = 0;
     previousMultiplier_[i] = committedMultiplier_[i];
     committedMultiplier_[i] = 0;
+    committedInReach_[i] = false;
 }
 
 

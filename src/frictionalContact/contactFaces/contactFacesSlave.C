@@ -283,6 +283,69 @@ Foam::label Foam::contactFaces::markPredictedClosed
 }
 
 
+Foam::labelList Foam::contactFaces::facesLeftReach
+(
+    const List<slaveFace>& faces
+) const
+{
+    DynamicList<label> left;
+    forAll(faces, i)
+    {
+        if (!faces[i].inReach && committedInReach_[i])
+        {
+            left.append(i);
+        }
+    }
+    return labelList(std::move(left));
+}
+
+
+Foam::label Foam::contactFaces::reportPressedThrough
+(
+    const labelList& left,
+    const scalarList& gaps,
+    const vectorField& x,
+    const scalar searchDistance
+) const
+{
+    label n = 0;
+    scalar deepest = 0;
+    point at(Zero);
+    forAll(left, j)
+    {
+        if (gaps[j] < -searchDistance)
+        {
+            ++n;
+            if (-gaps[j] > deepest)
+            {
+                deepest = -gaps[j];
+                at = x[left[j]];
+            }
+        }
+    }
+    reduce(n, sumOp<label>());
+    if (n)
+    {
+        const scalar deepestAll = returnReduce(deepest, maxOp<scalar>());
+        if (deepest != deepestAll)
+        {
+            at = Zero;
+        }
+        reduce(at, maxMagSqrOp<vector>());
+        Info<< "    patch " << contactPatch().name() << ": " << n
+            << " faces within reach at the last converged state are"
+            << " pressed through the other surface beyond the search distance "
+            << searchDistance << " m (the deepest by " << deepestAll
+            << " m at " << at << "): the step is cut back. If a smaller"
+            << " step does not keep them, a part of the surface next to"
+            << " them that is not in the contact patch (a tool's side) may"
+            << " let the body through; otherwise raise 'searchDistance'"
+            << endl;
+    }
+    return n;
+}
+
+
 void Foam::contactFaces::holdSlaveFaces(const List<slaveFace>& faces)
 {
     beginHold();

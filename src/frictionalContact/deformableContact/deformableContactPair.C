@@ -565,6 +565,55 @@ void Foam::deformableContactFvPatchVectorField::resetAugmentation
 }
 
 
+Foam::label Foam::deformableContactFvPatchVectorField::facesPressedThrough
+(
+    const solidPatchKinematics& k
+) const
+{
+    // [C2e] the slave faces that left the search distance against the
+    // master surface searched as far as the bodies moved in the step: a
+    // face within reach at its start is at most that far through
+    if (!slave_)
+    {
+        return 0;
+    }
+    checkPair();
+    side sl;
+    side ms;
+    List<slaveFace> faces;
+    evaluate(sl, ms, faces, k.deltaT);
+    const labelList left(facesLeftReach(faces));
+    if (!returnReduce(left.size(), sumOp<label>()))
+    {
+        return 0;
+    }
+    scalar moved = 0;
+    for (const label i : left)
+    {
+        moved = max(moved, mag(sl.D[i] - sl.Dold[i]));
+    }
+    reduce(moved, maxOp<scalar>());
+    if (ms.D.size())
+    {
+        moved += max(mag(ms.D - ms.Dold));
+    }
+    const scalar reach = searchDistance_ + moved;
+    labelListList cand;
+    overlapContactSurface::findCandidates(sl, ms, reach, 0, cand);
+    const overlapContactSurface wide(sl, ms, cand, reach);
+    scalarList gaps(left.size(), GREAT);
+    forAll(left, j)
+    {
+        masterPoint mp;
+        if (wide.masterPointOf(left[j], mp))
+        {
+            gaps[j] = mp.gap;
+        }
+    }
+    return reportPressedThrough(left, gaps, sl.X + sl.D, searchDistance_);
+}
+
+
 void Foam::deformableContactFvPatchVectorField::commit
 (
     const solidPatchKinematics& k

@@ -172,6 +172,30 @@ void Foam::frictionalContactFvPatchVectorField::resetAugmentation
 }
 
 
+Foam::label Foam::frictionalContactFvPatchVectorField::facesPressedThrough
+(
+    const solidPatchKinematics& k
+) const
+{
+    // [C2e] the obstacle searched without a limit for the faces that left
+    // the search distance
+    List<slaveFace> faces;
+    evaluate(k, faces);
+    const labelList left(facesLeftReach(faces));
+    const vectorField x(k.Cf0 + k.D);
+    scalarList gaps(left.size(), GREAT);
+    forAll(left, j)
+    {
+        obstaclePoint cp;
+        if (surface_->obstacle().nearest(x[left[j]], k.time, GREAT, cp))
+        {
+            gaps[j] = cp.gap;
+        }
+    }
+    return reportPressedThrough(left, gaps, x, surface_->searchDistance());
+}
+
+
 void Foam::frictionalContactFvPatchVectorField::commit
 (
     const solidPatchKinematics& k

@@ -777,6 +777,18 @@ bool Foam::solidDiscretisation::augmentForcePatches()
 }
 
 
+Foam::label Foam::solidDiscretisation::forcePatchFacesPressedThrough()
+{
+    label n = 0;
+    for (const label patchi : bcs_.contactPatchIDs())
+    {
+        const forceKinematics fk(*this, patchi, mesh_.time().deltaTValue());
+        n += bcs_.contactPatch(patchi).facesPressedThrough(fk.k);
+    }
+    return n;
+}
+
+
 Foam::PtrList<Foam::solidDiscretisation::forceKinematics>
 Foam::solidDiscretisation::contactPatchKinematics(const vectorField& u)
 {

@@ -467,6 +467,16 @@ bool Foam::totalLagrangianSolid::augment(const Eigen::VectorXd& x)
 }
 
 
+Foam::label Foam::totalLagrangianSolid::contactFacesPressedThrough
+(
+    const Eigen::VectorXd& x
+)
+{
+    discretisation_.setIterate(unpack(x));
+    return discretisation_.forcePatchFacesPressedThrough();
+}
+
+
 Foam::string Foam::totalLagrangianSolid::describeUnknown(const label i) const
 {
     const label nc = comps_.size();
