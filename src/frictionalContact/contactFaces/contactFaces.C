@@ -187,19 +187,7 @@ void Foam::contactFaces::readState
     {
         dissipation_ = scalarField("dissipatedEnergy", dict, n);
     }
-    // [C5b], [C5f] the multipliers the next step starts from, and the
-    // ones of the step before (to extrapolate from)
-    if (dict.found("normalMultiplier"))
-    {
-        committedMultiplier_ = scalarField("normalMultiplier", dict, n);
-    }
-    previousMultiplier_ = committedMultiplier_;
-    if (dict.found("previousNormalMultiplier"))
-    {
-        previousMultiplier_ =
-            scalarField("previousNormalMultiplier", dict, n);
-    }
-    predictMultipliers(0);
+    multipliers_.readState(dict, n);
 }
 
 
@@ -225,12 +213,9 @@ Foam::wordList Foam::contactFaces::missingState
     }
     for (const word& key : faceStateKeywords())
     {
-        // the multipliers only where the penalty is shifted by them, the
-        // step before's only with the predicted pressure
         const bool written =
-            key == "previousNormalMultiplier" ? pressurePrediction_
-          : key == "normalMultiplier" ? shifted()
-          : true;
+            !normalMultipliers::stateKeywords().found(key)
+         || multipliers_.written(key);
         if (written && !dict.found(key))
         {
             missing.append(key);
@@ -296,62 +281,6 @@ void Foam::contactFaces::checkPenaltyScales() const
 }
 
 
-void Foam::contactFaces::readAugmentation(const dictionary& dict)
-{
-    // [C5b]; 'yes' with the automatic soft penalty and tolerance [C5c]
-    const entry* e = dict.findEntry("augmentedLagrangian", keyType::LITERAL);
-    augmented_ =
-        e && (e->isDict() || dict.get<bool>("augmentedLagrangian"));
-    // [C5f] the default where the multipliers are not solved for; a time
-    // directory written before the keyword existed (a face state without
-    // it) continues with the plain penalty it was run with
-    const bool writtenBefore =
-        dict.found("dissipatedEnergy") && !dict.found("pressurePrediction");
-    pressurePrediction_ =
-        dict.lookupOrDefault<bool>
-        (
-            "pressurePrediction", !augmented_ && !writtenBefore
-        );
-    if (augmented_ && pressurePrediction_)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keywords 'augmentedLagrangian' and 'pressurePrediction yes'"
-            << " in dictionary " << dict.name() << " both given; expected"
-            << " one of them (the augmented Lagrangian solves for the"
-            << " pressures that the prediction guesses)" << nl
-            << exit(FatalIOError);
-    }
-    if (!augmented_)
-    {
-        return;
-    }
-    // a dictionary names its tolerance; 'yes' takes 1e-4 of the largest
-    // cell depth [C5c]
-    const dictionary empty(dict, dictionary());
-    const bool given = e && e->isDict();
-    const dictionary& a = given ? e->dict() : empty;
-    augmentTolerance_ =
-        given
-      ? a.get<scalar>("tolerance")
-      : 1e-4*contactSurface::maxCellDepth(contactPatch());
-    augmentMaxIterations_ = a.lookupOrDefault<label>("maxIterations", 10);
-    augmentAcceleration_ = a.lookupOrDefault<bool>("acceleration", true);
-    strictDictionary::check
-    (
-        a, {"tolerance", "maxIterations", "acceleration"},
-        "augmented Lagrangian contact"
-    );
-    if (!(augmentTolerance_ > 0) || augmentMaxIterations_ < 1)
-    {
-        FatalIOErrorInFunction(a)
-            << "Keywords 'tolerance' (a penetration [m]) and 'maxIterations'"
-            << " in dictionary " << a.name() << " must be > 0 and >= 1, got "
-            << augmentTolerance_ << " and " << augmentMaxIterations_ << nl
-            << exit(FatalIOError);
-    }
-}
-
-
 void Foam::contactFaces::sampleSensitivity(const frictionResult& res)
 {
     // [F21] at the face's own pressure, sliding rate and state
@@ -377,17 +306,20 @@ void Foam::contactFaces::readContactFaces(const dictionary& dict)
     // dictionary) for the law's messages
     lawDict_ = dict.subDict("frictionLaw");
     strictDictionary::nameAfterSource(lawDict_);
-    readAugmentation(dict);
+    multipliers_.readSettings
+    (
+        dict, contactSurface::maxCellDepth(contactPatch())
+    );
     // [C5], [C5c], [C5f] stiff for the plain penalty and a given
     // augmentation (its tolerance chosen for it), soft for
     // 'augmentedLagrangian yes' and softer for the predicted pressure
     const bool defaultAugmentation =
-        augmented_ && !dict.isDict("augmentedLagrangian");
+        augmented() && !dict.isDict("augmentedLagrangian");
     penaltyScale_ =
         dict.lookupOrDefault<scalar>
         (
             "penaltyScale",
-            defaultAugmentation ? 10 : pressurePrediction_ ? 3 : 100
+            defaultAugmentation ? 10 : multipliers_.predicted() ? 3 : 100
         );
     tangentialPenaltyScale_ =
         dict.lookupOrDefault<scalar>("tangentialPenaltyScale", 0.1);
@@ -511,9 +443,9 @@ Foam::wordList Foam::contactFaces::contactFacesKeywords() const
     wordList w
     ({
         "frictionLaw", "penaltyScale", "tangentialPenaltyScale",
-        "contactSmoothing", "contactSmoothingCells", "augmentedLagrangian",
-        "pressurePrediction"
+        "contactSmoothing", "contactSmoothingCells"
     });
+    w.append(normalMultipliers::settingKeywords());
     w.append(faceStateKeywords());
     w.append(layout_.keywords());
     return w;
@@ -522,11 +454,12 @@ Foam::wordList Foam::contactFaces::contactFacesKeywords() const
 
 const Foam::wordList& Foam::contactFaces::faceStateKeywords()
 {
-    static const wordList keys
-    ({
-        "value", "dissipatedEnergy", "normalMultiplier",
-        "previousNormalMultiplier"
-    });
+    static const wordList keys = []
+    {
+        wordList w({"value", "dissipatedEnergy"});
+        w.append(normalMultipliers::stateKeywords());
+        return w;
+    }();
     return keys;
 }
 
@@ -564,18 +497,8 @@ void Foam::contactFaces::copyContactFaces(const contactFaces& ptf)
     nSlip_ = ptf.nSlip_;
     sensitivity_ = ptf.sensitivity_;
     illPosedWarned_ = ptf.illPosedWarned_;
-    augmented_ = ptf.augmented_;
-    augmentTolerance_ = ptf.augmentTolerance_;
-    augmentMaxIterations_ = ptf.augmentMaxIterations_;
-    augmentAcceleration_ = ptf.augmentAcceleration_;
-    pressurePrediction_ = ptf.pressurePrediction_;
-    lastAugmentChange_ = ptf.lastAugmentChange_;
-    committedMultiplier_ = ptf.committedMultiplier_;
-    multiplier_ = ptf.multiplier_;
-    previousMultiplier_ = ptf.previousMultiplier_;
-    startMultiplier_ = ptf.startMultiplier_;
+    multipliers_ = ptf.multipliers_;
     committedInReach_ = ptf.committedInReach_;
-    nAugmentations_ = ptf.nAugmentations_;
     linearised_ = false;
 }
 
@@ -588,10 +511,7 @@ void Foam::contactFaces::resizeFaces(const label n)
     frictionTraction_.setSize(n, Zero);
     penetration_.setSize(n, 0);
     dissipation_.setSize(n, 0);
-    committedMultiplier_.setSize(n, 0);
-    multiplier_.setSize(n, 0);
-    previousMultiplier_.setSize(n, 0);
-    startMultiplier_.setSize(n, 0);
+    multipliers_.resize(n);
     committedInReach_.setSize(n);
     committedInReach_ = true;
 }
@@ -614,10 +534,7 @@ void Foam::contactFaces::copyFace
     frictionTraction_[to] = ptf.frictionTraction_[from];
     penetration_[to] = ptf.penetration_[from];
     dissipation_[to] = ptf.dissipation_[from];
-    committedMultiplier_[to] = ptf.committedMultiplier_[from];
-    multiplier_[to] = ptf.multiplier_[from];
-    previousMultiplier_[to] = ptf.previousMultiplier_[from];
-    startMultiplier_[to] = ptf.startMultiplier_[from];
+    multipliers_.copyFace(ptf.multipliers_, from, to);
     committedInReach_[to] = ptf.committedInReach_[from];
 }
 
@@ -656,13 +573,6 @@ Foam::contactFaces::contactFaces()
     nContact_(0),
     nSlip_(0),
     illPosedWarned_(false),
-    augmented_(false),
-    augmentTolerance_(0),
-    augmentMaxIterations_(0),
-    augmentAcceleration_(false),
-    pressurePrediction_(false),
-    nAugmentations_(0),
-    lastAugmentChange_(0),
     body_(nullptr),
     flowLaw_(nullptr),
     linearised_(false)
@@ -736,55 +646,19 @@ bool Foam::contactFaces::setOnsetWidening(const scalar factor)
     if (factor != onsetWidening_)
     {
         onsetWidening_ = factor;
-        resetMultipliers();
+        multipliers_.reset();
     }
     return contactSmoothing_ > 0;
 }
 
 
-void Foam::contactFaces::resetMultipliers()
-{
-    multiplier_ = startMultiplier_;
-    nAugmentations_ = 0;
-    lastAugmentChange_ = 0;
-}
-
-
-void Foam::contactFaces::predictMultipliers(const scalar extrapolation)
-{
-    // [C5f] linear in time from the last two converged steps, as the
-    // displacements are [S18]; a pressure is never negative
-    startMultiplier_ = committedMultiplier_;
-    if (pressurePrediction_ && extrapolation > 0)
-    {
-        forAll(startMultiplier_, i)
-        {
-            startMultiplier_[i] = max
-            (
-                committedMultiplier_[i]
-              + extrapolation
-               *(committedMultiplier_[i] - previousMultiplier_[i]),
-                scalar(0)
-            );
-        }
-    }
-    resetMultipliers();
-}
-
-
 bool Foam::contactFaces::augmentSlaveFaces(const List<slaveFace>& faces)
 {
-    if (!augmented_)
+    if (!augmented())
     {
         return false;
     }
-
-    // [C5b] the update lambda <- tN moves each multiplier by KN times the
-    // face's constraint violation (its penetration, or the opening of a
-    // face that still carries its multiplier): converged when that is
-    // below the tolerance everywhere
-    const scalar KN = law().KN();
-    scalar change = 0;
+    // [C5b] lambda <- tN; the faces out of reach carry none
     scalar penetration = 0;
     scalarField next(faces.size(), 0);
     forAll(faces, i)
@@ -798,62 +672,12 @@ bool Foam::contactFaces::augmentSlaveFaces(const List<slaveFace>& faces)
                 penetration = max(penetration, -sf.gap);
             }
         }
-        change = max(change, mag(next[i] - multiplier_[i])/KN);
     }
-    reduce(change, maxOp<scalar>());
     reduce(penetration, maxOp<scalar>());
-
-    const bool done =
-        change <= augmentTolerance_
-     || nAugmentations_ >= augmentMaxIterations_;
-    Info<< "    contact " << contactPatch().name() << ": augmentation "
-        << nAugmentations_ << ", largest penetration " << penetration
-        << " m, multiplier change " << change << " m (tolerance "
-        << augmentTolerance_ << " m)"
-        << (
-               change <= augmentTolerance_ ? ": converged"
-             : done ? ": maxIterations reached, not converged"
-             : ": update"
-           )
-        << endl;
-    if (done)
-    {
-        return false;
-    }
-    const scalar omega = augmentExtrapolation(change);
-    forAll(next, i)
-    {
-        multiplier_[i] =
-            max(multiplier_[i] + omega*(next[i] - multiplier_[i]), 0);
-    }
-    lastAugmentChange_ = change;
-    ++nAugmentations_;
-    return true;
-}
-
-
-Foam::scalar Foam::contactFaces::augmentExtrapolation
-(
-    const scalar change
-) const
-{
-    // [C5e] Uzawa's updates contract the constraint's violation by a
-    // nearly constant factor rho (k/(k + KN), [C5b]): the multipliers'
-    // limit lies 1/(1 - rho) times the update away (Aitken). rho is the
-    // ratio of this update's change to the last one's; an update after
-    // an extrapolation that overshot or one that hardly contracted (rho
-    // outside (0, rhoMax)) is the plain one
-    const scalar rhoMax = 0.75;
-    if (!augmentAcceleration_ || lastAugmentChange_ <= 0)
-    {
-        return 1;
-    }
-    const scalar rho = change/lastAugmentChange_;
-    if (!(rho > 0) || rho > rhoMax)
-    {
-        return 1;
-    }
-    return 1/(1 - rho);
+    return multipliers_.update
+    (
+        next, law().KN(), penetration, contactPatch().name()
+    );
 }
 
 

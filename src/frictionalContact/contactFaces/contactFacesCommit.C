@@ -169,8 +169,7 @@ void Foam::contactFaces::commitFace
     nominalContactPressure_[i] = res.tN*area/magS0;
     frictionTraction_[i] = -res.tT;
     penetration_[i] = max(-gap, scalar(0));
-    previousMultiplier_[i] = committedMultiplier_[i];
-    committedMultiplier_[i] = shifted() ? res.tN : 0;
+    multipliers_.commit(i, res.tN);
     committedInReach_[i] = true;
 
     normalForce_ += area*res.tN*n;
@@ -202,8 +201,7 @@ void Foam::contactFaces::commitOpenFace(const label i)
     nominalContactPressure_[i] = 0;
     frictionTraction_[i] = Zero;
     penetration_[i] = 0;
-    previousMultiplier_[i] = committedMultiplier_[i];
-    committedMultiplier_[i] = 0;
+    multipliers_.commitOpen(i);
     committedInReach_[i] = false;
 }
 
@@ -252,7 +250,7 @@ void Foam::contactFaces::endCommit()
 
     // [C5b] the next step starts from this step's normal tractions (and
     // [C5f] from their extrapolation, once the step's size is known)
-    predictMultipliers(0);
+    multipliers_.predict(0);
 
     updateFields();
     writeIntegrals();
@@ -332,28 +330,7 @@ void Foam::contactFaces::writeFaces(Ostream& os) const
     // Face state for restart, as the law declares it
     layout_.write(os, state_);
     dissipation_.writeEntry("dissipatedEnergy", os);
-    if (augmented_)
-    {
-        os.beginBlock("augmentedLagrangian");
-        os.writeEntry("tolerance", augmentTolerance_);
-        os.writeEntry("maxIterations", augmentMaxIterations_);
-        os.endBlock();
-    }
-    else
-    {
-        os.writeEntry
-        (
-            "pressurePrediction", word(pressurePrediction_ ? "yes" : "no")
-        );
-    }
-    if (shifted())
-    {
-        committedMultiplier_.writeEntry("normalMultiplier", os);
-    }
-    if (pressurePrediction_)
-    {
-        previousMultiplier_.writeEntry("previousNormalMultiplier", os);
-    }
+    multipliers_.write(os);
 }
 
 

@@ -559,7 +559,7 @@ void Foam::deformableContactFvPatchVectorField::resetAugmentation
 {
     if (slave_)
     {
-        predictMultipliers(extrapolation);
+        multipliers().predict(extrapolation);
         cache_ = tangentCache();
     }
 }

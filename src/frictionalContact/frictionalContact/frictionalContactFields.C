@@ -168,7 +168,7 @@ void Foam::frictionalContactFvPatchVectorField::resetAugmentation
     const scalar extrapolation
 )
 {
-    predictMultipliers(extrapolation);
+    multipliers().predict(extrapolation);
 }
 
 
