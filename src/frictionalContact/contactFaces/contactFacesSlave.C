@@ -336,7 +336,7 @@ Foam::label Foam::contactFaces::reportPressedThrough
             << " faces within reach at the last converged state are"
             << " pressed through the other surface beyond the search distance "
             << searchDistance << " m (the deepest by " << deepestAll
-            << " m at " << at << "): the step is cut back. If a smaller"
+            << " m at " << at << "): the solve is rejected. If a smaller"
             << " step does not keep them, a part of the surface next to"
             << " them that is not in the contact patch (a tool's side) may"
             << " let the body through; otherwise raise 'searchDistance'"
