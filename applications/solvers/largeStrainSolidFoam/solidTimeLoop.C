@@ -12,7 +12,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "solidTimeLoop.H"
-#include "OStringStream.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -160,10 +159,10 @@ void Foam::solidTimeLoop::rejectFacesPressedThrough
     {
         res.converged = false;
         res.accepted = false;
-        OStringStream os;
-        os  << n << " contact faces pressed through the other surface,"
-            << " beyond the search distance";
-        res.reason = os.str();
+        res.reason =
+            Foam::name(n)
+          + " contact faces pressed through the other surface, beyond the"
+            " search distance";
     }
 }
 
