@@ -55,8 +55,10 @@ void Foam::contactFaces::evaluateSlaveFace
     in.shearYield = shearYield(i);
     if (held)
     {
-        // the law's consistent tangent at the held result [F7]
+        // the law's consistent tangent at the held result [F7], with the
+        // turn of the tangent plane inside the law
         linearAbout(held->input, held->result, in, sf.result);
+        sf.result.tT += held->dtTdn & (in.n - held->input.n);
     }
     else
     {
@@ -88,6 +90,42 @@ void Foam::contactFaces::evaluateSlaveFaces
     {
         evaluateSlaveFace(i, master, dOwn[i], area[i], dt, faces[i]);
     }
+}
+
+
+Foam::tensor Foam::contactFaces::tangentialTurn
+(
+    const frictionState& old,
+    const frictionInput& in
+) const
+{
+    // [F7] the law's tangential traction as its normal turns at the same
+    // slip: d tT/d n on the tangent plane, by central differences in n
+    // along two tangents t_j: sum_j (d tT/d t_j) t_j
+    const scalar h = 1e-6;
+    const vector& n = in.n;
+    const tensor P(tensor::I - sqr(n));
+    vector t1(P & vector(1, 0, 0));
+    if (magSqr(t1) < 0.1)
+    {
+        t1 = P & vector(0, 1, 0);
+    }
+    t1 /= mag(t1);
+    const vector t2(n ^ t1);
+    tensor turn(Zero);
+    for (const vector& tj : {t1, t2})
+    {
+        frictionInput inp(in);
+        frictionInput inm(in);
+        inp.n = (n + h*tj)/mag(n + h*tj);
+        inm.n = (n - h*tj)/mag(n - h*tj);
+        frictionResult rp;
+        frictionResult rm;
+        law().update(old, inp, rp);
+        law().update(old, inm, rm);
+        turn += ((rp.tT - rm.tT)/(2*h))*tj;
+    }
+    return turn;
 }
 
 
@@ -139,7 +177,7 @@ void Foam::contactFaces::slaveFaceTangent
     const tensor dgTdx((P & dvdx) - (n & v)*N - n*(N.T() & v));
 
     // the law's tangent [F7]; on a curved master also the turn of the
-    // tangent plane inside the law, by central differences in n
+    // tangent plane inside the law
     tensor dtTdx(Zero);
     if (!lineOnly)
     {
@@ -147,26 +185,7 @@ void Foam::contactFaces::slaveFaceTangent
     }
     if (!lineOnly && magSqr(N) > 0)
     {
-        const scalar h = 1e-6;
-        vector t1(P & vector(1, 0, 0));
-        if (magSqr(t1) < 0.1)
-        {
-            t1 = P & vector(0, 1, 0);
-        }
-        t1 /= mag(t1);
-        const vector t2(n ^ t1);
-        for (const vector& tj : {t1, t2})
-        {
-            frictionInput inp(in);
-            frictionInput inm(in);
-            inp.n = (n + h*tj)/mag(n + h*tj);
-            inm.n = (n - h*tj)/mag(n - h*tj);
-            frictionResult rp;
-            frictionResult rm;
-            law().update(old, inp, rp);
-            law().update(old, inm, rm);
-            dtTdx += ((rp.tT - rm.tT)/(2*h))*(N.T() & tj);
-        }
+        dtTdx += tangentialTurn(old, in) & N;
     }
 
     // [C4] area da = |a|, a = J F^-T . S0

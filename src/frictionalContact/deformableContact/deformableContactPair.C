@@ -316,6 +316,7 @@ void Foam::deformableContactFvPatchVectorField::pairTangent
         {
             continue;
         }
+        base.dtTdn = tangentialTurn(state()[i], base.input);
         const labelList masters(base.masters);
 
         slaveFaceDerivatives(i, base, master, sl, sl, i, deltaT, d);
