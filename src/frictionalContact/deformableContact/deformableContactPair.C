@@ -316,7 +316,11 @@ void Foam::deformableContactFvPatchVectorField::pairTangent
         {
             continue;
         }
-        base.dtTdn = tangentialTurn(state()[i], base.input);
+        if (base.result.tT != vector::zero)
+        {
+            // (an open face's or a frictionless law's tT stays zero)
+            base.dtTdn = tangentialTurn(state()[i], base.input);
+        }
         const labelList masters(base.masters);
 
         slaveFaceDerivatives(i, base, master, sl, sl, i, deltaT, d);

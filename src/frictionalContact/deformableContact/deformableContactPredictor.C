@@ -25,7 +25,6 @@ Description
 Foam::scalar Foam::deformableContactFvPatchVectorField::predictedSlip
 (
     const side& sl,
-    const side& ms,
     const label i,
     const masterPoint& p
 )
@@ -113,7 +112,7 @@ Foam::label Foam::deformableContactFvPatchVectorField::predictorCorrection
         if
         (
             o.inReach && p.inReach
-         && predictedSlip(sl, ms, i, p) < 0.5*masterLength(ms, p)
+         && predictedSlip(sl, i, p) < 0.5*masterLength(ms, p)
          && keepContact(i, o.gap, p.gap, p.n, dD[i])
         )
         {
