@@ -73,7 +73,7 @@ static bool readDisplacementTest(const dictionary& dict)
 {
     const word name
     (
-        dict.lookupOrDefault<word>("displacementTest", "correction")
+        dict.lookupOrDefault<word>("displacementTest", "estimate")
     );
     if (name != "estimate" && name != "correction")
     {
