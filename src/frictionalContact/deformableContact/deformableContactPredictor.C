@@ -100,10 +100,9 @@ Foam::label Foam::deformableContactFvPatchVectorField::predictorCorrection
 
     // n: the master's normal, into the slave body. A face predicted to
     // slide by half a master face or more meets another part of the
-    // master surface, whose predicted shape is the extrapolation's guess:
-    // its converged gap is not kept (on the zoo's ironing, 0.2 mm per step
-    // over 0.0625 mm slab faces, the correction tilted the die's faces by
-    // up to 60 degrees)
+    // master surface, whose predicted shape is the extrapolation's guess
+    // (a travelling indentation extrapolated in time is none): its
+    // converged gap is not kept
     label nCorrected = 0;
     forAll(dD, i)
     {
