@@ -96,12 +96,19 @@ void Foam::contactFaces::evaluateSlaveFaces
 Foam::tensor Foam::contactFaces::tangentialTurn
 (
     const frictionState& old,
-    const frictionInput& in
+    const frictionInput& in,
+    const frictionResult& res
 ) const
 {
     // [F7] the law's tangential traction as its normal turns at the same
     // slip: d tT/d n on the tangent plane, by central differences in n
-    // along two tangents t_j: sum_j (d tT/d t_j) t_j
+    // along two tangents t_j: sum_j (d tT/d t_j) t_j. A result without
+    // tangential traction (an open face, a frictionless law, no elastic
+    // slip) keeps none as the plane turns
+    if (res.tT == vector::zero)
+    {
+        return Zero;
+    }
     const scalar h = 1e-6;
     const vector& n = in.n;
     const tensor P(tensor::I - sqr(n));
@@ -185,7 +192,7 @@ void Foam::contactFaces::slaveFaceTangent
     }
     if (!lineOnly && magSqr(N) > 0)
     {
-        dtTdx += tangentialTurn(old, in) & N;
+        dtTdx += tangentialTurn(old, in, res) & N;
     }
 
     // [C4] area da = |a|, a = J F^-T . S0

@@ -316,11 +316,7 @@ void Foam::deformableContactFvPatchVectorField::pairTangent
         {
             continue;
         }
-        if (base.result.tT != vector::zero)
-        {
-            // (an open face's or a frictionless law's tT stays zero)
-            base.dtTdn = tangentialTurn(state()[i], base.input);
-        }
+        base.dtTdn = tangentialTurn(state()[i], base.input, base.result);
         const labelList masters(base.masters);
 
         slaveFaceDerivatives(i, base, master, sl, sl, i, deltaT, d);
